@@ -1,0 +1,24 @@
+# The two commands of the quick start. Both install what they need first.
+#   make demo   build in release, run the main job on a bundled example
+#   make test   build in release, run the whole suite through ctest
+BUILD_DIR ?= build/release
+JOBS ?= $(shell nproc 2>/dev/null || echo 2)
+DEMO ?= examples/abop/fig2_6a_monopodial.ramus
+
+.PHONY: demo test deps build clean
+
+deps:
+	@bash scripts/install-deps.sh
+
+build: deps
+	@cmake --preset release -S . -B $(BUILD_DIR) >/dev/null
+	@cmake --build $(BUILD_DIR) -j $(JOBS)
+
+demo: build
+	@bash scripts/demo.sh $(BUILD_DIR)/ramus $(DEMO)
+
+test: build
+	@cd $(BUILD_DIR) && ctest --output-on-failure -j $(JOBS)
+
+clean:
+	rm -rf build out

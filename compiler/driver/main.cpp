@@ -1,0 +1,41 @@
+// ramus: the command-line interface. A thin layer over the libraries; see docs/cli.md.
+#include <cstdio>
+#include <exception>
+#include <functional>
+
+#include "compiler/driver/command.h"
+#include "core/atomic_file.h"
+
+int main(int argc, char** argv) {
+  using namespace ramus::cli;
+  CLI::App app{"ramus: a toolchain for tree grammars", "ramus"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "ramus 0.1.0");
+  GlobalOptions global;
+  app.add_flag("-q,--quiet", global.quiet, "no progress output");
+
+  std::function<int()> run;
+  for (const CommandSpec& spec : command_table()) spec.add(app, global, run);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    int code = app.exit(e);
+    return code == 0 ? 0 : 2;
+  }
+  try {
+    return run ? run() : 2;
+  } catch (const UserError& e) {
+    std::fprintf(stderr, "ramus: error: %s\n", e.what());
+    return 1;
+  } catch (const ramus::WriteError& e) {
+    std::fprintf(stderr, "ramus: error: %s\n", e.what());
+    return 1;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "ramus: error: out of memory\n");
+    return 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "ramus: internal error: %s\n", e.what());
+    return 3;
+  }
+}

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# Installs the Debian packages and npm tools the build and the tests need, only when missing.
+set -euo pipefail
+packages=(
+  build-essential cmake ccache pkg-config
+  libboost-dev libeigen3-dev libtinygltf-dev libstb-dev libopenmesh-dev libcli11-dev
+  catch2 libnanoflann-dev libtbb-dev libzstd-dev
+  python3 python3-numpy python3-pywt python3-scipy nodejs
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  sudo_cmd=""
+  [ "$(id -u)" -eq 0 ] || sudo_cmd="sudo"
+  echo "installing: ${missing[*]}"
+  $sudo_cmd apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+# npm tools used by the test suite live in tools/node_modules (not committed).
+if [ -f tools/package.json ] && [ ! -d tools/node_modules ]; then
+  (cd tools && npm install --no-audit --no-fund --silent)
+fi
