@@ -5,10 +5,32 @@ namespace ramus::cli {
 
 // Each is defined in cmd_<name>.cpp.
 void add_version_info(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_check(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_fmt(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_derive(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_compress(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_enhance(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_inspect(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_build(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_preview(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_reconstruct(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_scan(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_dump(CLI::App&, const GlobalOptions&, std::function<int()>&);
 
 const std::vector<CommandSpec>& command_table() {
   static const std::vector<CommandSpec> table = {
       {"info", add_version_info},
+      {"check", add_check},
+      {"fmt", add_fmt},
+      {"derive", add_derive},
+      {"compress", add_compress},
+      {"enhance", add_enhance},
+      {"inspect", add_inspect},
+      {"build", add_build},
+      {"preview", add_preview},
+      {"reconstruct", add_reconstruct},
+      {"scan", add_scan},
+      {"dump", add_dump},
   };
   return table;
 }

@@ -1,0 +1,28 @@
+// glTF 2.0 output of TreeMeshes (through tinygltf): `.glb` (one binary file) or `.gltf` with its
+// buffer in a `.bin` beside it. Layout (docs/mesh.md): one buffer; per LOD one mesh
+// "<name>_LODk" with a "bark" and a "leaf" primitive; one node per tree (with one child node per
+// LOD when there are several); PBR materials bark (opaque) and leaf (alphaMode MASK); the wind
+// weights as the custom VEC4 float attribute `_WIND`.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "backends/mesh/tree_mesh.h"
+
+namespace ramus::mesh {
+
+// The file's bytes: a GLB container, or (binary == false) the JSON of a .gltf whose buffer uri
+// is `bin_uri` and the .bin bytes in `bin`.
+struct GltfBytes {
+  std::string main;
+  std::string bin;
+};
+GltfBytes encode_gltf(const std::vector<TreeMesh>& lods, bool binary,
+                      const std::string& bin_uri = "");
+
+// Writes `path` (.glb or .gltf; for .gltf also <stem>.bin beside it) atomically. Throws MeshError
+// for an empty tree or a buffer beyond glTF's limits, WriteError when a file cannot be written.
+void write_gltf(const std::vector<TreeMesh>& lods, const std::string& path);
+
+}  // namespace ramus::mesh

@@ -1,0 +1,111 @@
+#include "backends/mesh/openmesh_writer.h"
+
+// GCC 12 reports a false maybe-uninitialized inside OpenMesh's property containers.
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+
+#include <OpenMesh/Core/IO/MeshIO.hh>
+#include <OpenMesh/Core/Mesh/TriMesh_ArrayKernelT.hh>
+#include <OpenMesh/Core/System/omstream.hh>
+#include <filesystem>
+#include <sstream>
+
+#include "core/atomic_file.h"
+
+namespace ramus::mesh {
+namespace {
+
+using OMesh = OpenMesh::TriMesh_ArrayKernelT<>;
+
+constexpr OpenMesh::Vec3uc kBarkColour{92, 66, 44};
+constexpr OpenMesh::Vec3uc kLeafColour{70, 135, 45};
+
+void add_part(OMesh& om, const MeshPart& part, const OpenMesh::Vec3uc& colour) {
+  std::vector<OMesh::VertexHandle> vh(part.vertex_count());
+  for (std::size_t i = 0; i < part.vertex_count(); ++i) {
+    const Vec3f& p = part.positions[i];
+    const Vec3f& n = part.normals[i];
+    vh[i] = om.add_vertex(OMesh::Point(p.x, p.y, p.z));
+    om.set_normal(vh[i], OMesh::Normal(n.x, n.y, n.z));
+    om.set_texcoord2D(vh[i], OMesh::TexCoord2D(part.uvs[i][0], part.uvs[i][1]));
+    om.set_color(vh[i], OMesh::Color(colour));
+  }
+  for (std::size_t t = 0; t < part.triangle_count(); ++t) {
+    const auto* idx = &part.indices[3 * t];
+    if (!om.add_face(vh[idx[0]], vh[idx[1]], vh[idx[2]]).is_valid()) {
+      throw MeshError("OpenMesh rejected triangle " + std::to_string(t) + " (non-manifold)");
+    }
+  }
+}
+
+OMesh to_openmesh(const TreeMesh& mesh) {
+  OMesh om;
+  om.request_vertex_normals();
+  om.request_vertex_texcoords2D();
+  om.request_vertex_colors();
+  add_part(om, mesh.bark, kBarkColour);
+  add_part(om, mesh.leaves, kLeafColour);
+  return om;
+}
+
+std::string write_to_string(const OMesh& om, const std::string& ext, OpenMesh::IO::Options opt) {
+  omlog().disable();  // library code does not print; OpenMesh logs every write otherwise
+  std::ostringstream os;
+  if (!OpenMesh::IO::write_mesh(om, os, ext, opt, 9)) {
+    throw MeshError("OpenMesh could not encode the mesh as " + ext);
+  }
+  return os.str();
+}
+
+// Adds `mtllib` and the material switches: the bark faces come first, then the leaf faces.
+std::string add_materials(const std::string& obj, const std::string& mtl_name,
+                          std::size_t bark_faces, std::size_t leaf_faces) {
+  std::istringstream in(obj);
+  std::string out = "# ramus tree mesh\nmtllib " + mtl_name + "\n";
+  out.reserve(obj.size() + 64);
+  std::string line;
+  std::size_t faces = 0;
+  while (std::getline(in, line)) {
+    if (line.rfind("f ", 0) == 0) {
+      if (faces == 0 && bark_faces > 0) out += "usemtl bark\n";
+      if (faces == bark_faces && leaf_faces > 0) out += "usemtl leaf\n";
+      ++faces;
+    }
+    out += line;
+    out += '\n';
+  }
+  return out;
+}
+
+}  // namespace
+
+std::string obj_material_library() {
+  return "# ramus tree materials\n"
+         "newmtl bark\nKa 0 0 0\nKd 0.361 0.259 0.173\nKs 0.02 0.02 0.02\nNs 8\nd 1\nillum 2\n\n"
+         "newmtl leaf\nKa 0 0 0\nKd 0.275 0.529 0.176\nKs 0.05 0.05 0.05\nNs 16\nd 1\nillum 2\n";
+}
+
+void write_openmesh(const TreeMesh& mesh, const std::string& path) {
+  if (mesh.bark.empty() && mesh.leaves.empty())
+    throw MeshError("nothing to write: the tree has no geometry");
+  const std::filesystem::path p(path);
+  const std::string ext = p.extension().string();
+  OpenMesh::IO::Options opt =
+      OpenMesh::IO::Options::VertexNormal | OpenMesh::IO::Options::VertexTexCoord;
+  if (ext == ".ply") {
+    opt += OpenMesh::IO::Options::Binary;
+    opt += OpenMesh::IO::Options::LSB;
+    opt += OpenMesh::IO::Options::VertexColor;
+    write_file_atomically(path, write_to_string(to_openmesh(mesh), ".ply", opt));
+    return;
+  }
+  if (ext != ".obj") throw MeshError("unknown mesh file extension '" + ext + "': " + path);
+  std::filesystem::path mtl = p;
+  mtl.replace_extension(".mtl");
+  const std::string obj = write_to_string(to_openmesh(mesh), ".obj", opt);
+  write_file_atomically(mtl.string(), obj_material_library());
+  write_file_atomically(path,
+                        add_materials(obj, mtl.filename().string(), mesh.bark.triangle_count(),
+                                      mesh.leaves.triangle_count()));
+}
+
+}  // namespace ramus::mesh

@@ -1,0 +1,117 @@
+// build_tree_mesh: Skeleton -> TreeMesh, and the levels of detail. LOD k halves the radial
+// segments k times (never below 3), drops branch chains thinner than a growing fraction of the
+// trunk (with everything growing from them), and keeps every 2^k-th leaf enlarged by sqrt(2^k)
+// so the crown keeps its leaf area and silhouette.
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "backends/mesh/builders.h"
+
+namespace ramus::mesh {
+namespace {
+
+void check_options(const MeshOptions& o, int lod) {
+  auto bad = [](const std::string& what) { throw MeshError("invalid mesh option: " + what); };
+  if (!(std::isfinite(o.pipe_exponent) && o.pipe_exponent >= 0)) bad("pipe exponent must be >= 0");
+  if (o.pipe_exponent > 0 && o.pipe_exponent < 1) bad("pipe exponent must be at least 1");
+  if (!(std::isfinite(o.min_radius) && o.min_radius >= 0)) bad("minimum radius must be >= 0");
+  if (o.min_radial_segments < 3 || o.max_radial_segments < o.min_radial_segments ||
+      o.max_radial_segments > 256) {
+    bad("radial segments must satisfy 3 <= min <= max <= 256");
+  }
+  if (!(std::isfinite(o.leaf_scale) && o.leaf_scale > 0)) bad("leaf scale must be > 0");
+  if (!(std::isfinite(o.leaf_aspect) && o.leaf_aspect > 0)) bad("leaf aspect must be > 0");
+  if (o.lod_count < 1 || o.lod_count > 8) bad("LOD count must be 1..8");
+  if (lod < 0 || lod > 7) bad("LOD index must be 0..7");
+}
+
+// Fraction of the thickest radius below which LOD k drops a chain: none at LOD0, then 2%, 6%, ...
+double drop_fraction(int lod) { return lod == 0 ? 0.0 : 0.02 * std::pow(3.0, lod - 1); }
+
+void check_result(const TreeMesh& m) {
+  for (const MeshPart* part : {&m.bark, &m.leaves}) {
+    if (part->positions.size() >= std::numeric_limits<std::uint32_t>::max()) {
+      throw MeshError("the mesh has more vertices than 32-bit indices can address");
+    }
+    for (const Vec3f& v : part->positions) {
+      if (!is_finite(v))
+        throw MeshError("coordinates overflow single precision (is the skeleton scaled sensibly?)");
+    }
+  }
+}
+
+TreeMesh build_level(const Skeleton& s, const PreparedSkeleton& p, const WindField& wind,
+                     const MeshOptions& options, int lod, MeshReport& report) {
+  TreeMesh mesh;
+  mesh.name = options.name + "_LOD" + std::to_string(lod);
+  TubeParams tp;
+  tp.max_segments = std::max(options.min_radial_segments, options.max_radial_segments >> lod);
+  tp.min_segments = options.min_radial_segments;
+  tp.caps = options.caps;
+  tp.count_repairs = lod == 0;
+  const double drop_below = p.max_radius * drop_fraction(lod);
+  std::vector<std::uint8_t> dropped(p.chains.size(), 0);
+  for (std::uint32_t c = 0; c < p.chains.size(); ++c) {
+    const Chain& ch = p.chains[c];
+    const bool parent_gone = ch.parent_chain != kNoChain && dropped[ch.parent_chain];
+    const double r = p.radius[ch.nodes.size() > 1 ? ch.nodes[1] : ch.nodes[0]];
+    dropped[c] = parent_gone || (ch.parent_chain != kNoChain && r < drop_below);
+    if (dropped[c]) continue;
+    if (!add_chain_tube(s, p, c, wind, tp, mesh.bark, report) && lod == 0) ++report.skipped_chains;
+  }
+  const std::size_t stride = std::size_t(1) << lod;
+  const double scale = std::sqrt(double(stride));
+  for (std::size_t i = 0; i < s.organs.size(); ++i) {
+    if (i % stride != 0) continue;
+    if (!add_organ_cards(s, p, i, wind, options, scale, mesh.leaves) && lod == 0) {
+      ++report.skipped_organs;
+    }
+  }
+  check_result(mesh);
+  return mesh;
+}
+
+}  // namespace
+
+std::vector<std::string> MeshReport::warnings() const {
+  std::vector<std::string> w;
+  auto n = [](std::size_t k) { return std::to_string(k); };
+  if (radii_synthesized)
+    w.push_back("the skeleton has no radii; using the pipe model from thin tips");
+  if (clamped_radii) {
+    w.push_back(n(clamped_radii) + " node radii were zero, negative or below " +
+                std::to_string(min_radius) + " and were clamped to it");
+  }
+  if (merged_nodes)
+    w.push_back(n(merged_nodes) + " zero-length segments (coincident nodes) were merged");
+  if (skipped_chains) w.push_back(n(skipped_chains) + " branches of zero length have no tube");
+  if (skipped_organs)
+    w.push_back(n(skipped_organs) + " organs of zero or negative size were left out");
+  return w;
+}
+
+TreeMesh build_tree_mesh(const Skeleton& s, const MeshOptions& options, int lod,
+                         MeshReport* report) {
+  check_options(options, lod);
+  MeshReport local;
+  MeshReport& r = report ? *report : local;
+  const PreparedSkeleton p = prepare_skeleton(s, options, r);
+  const WindField wind = make_wind_field(s, p);
+  return build_level(s, p, wind, options, lod, r);
+}
+
+std::vector<TreeMesh> build_tree_lods(const Skeleton& s, const MeshOptions& options,
+                                      MeshReport* report) {
+  check_options(options, 0);
+  MeshReport local;
+  MeshReport& r = report ? *report : local;
+  const PreparedSkeleton p = prepare_skeleton(s, options, r);
+  const WindField wind = make_wind_field(s, p);
+  std::vector<TreeMesh> lods;
+  for (int k = 0; k < options.lod_count; ++k)
+    lods.push_back(build_level(s, p, wind, options, k, r));
+  return lods;
+}
+
+}  // namespace ramus::mesh

@@ -1,0 +1,85 @@
+#include "backends/preview/preview.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include "backends/mesh/leaf_shape.h"
+#include "backends/preview/png.h"
+#include "backends/preview/view.h"
+#include "core/atomic_file.h"
+
+namespace ramus::preview {
+namespace {
+
+void check(const PreviewOptions& o) {
+  if (o.width < 16 || o.height < 16 || o.width > 8192 || o.height > 8192) {
+    throw std::invalid_argument("preview size must be between 16x16 and 8192x8192");
+  }
+  if (o.supersample < 1 || o.supersample > 4) {
+    throw std::invalid_argument("supersampling must be 1..4");
+  }
+}
+
+void draw_part(Raster& raster, const View& view, const mesh::MeshPart& part, bool leaf, int f) {
+  for (std::size_t t = 0; t + 2 < part.indices.size(); t += 3) {
+    const std::uint32_t i0 = part.indices[t], i1 = part.indices[t + 1], i2 = part.indices[t + 2];
+    const auto& p = part.positions;
+    if (!view.faces_viewer(p[i0], p[i1], p[i2])) continue;  // back faces: hidden or doubled
+    std::array<Vec3f, 3> v{view.project(p[i0]), view.project(p[i1]), view.project(p[i2])};
+    for (Vec3f& q : v) {
+      q.x *= float(f);
+      q.y *= float(f);
+    }
+    raster.triangle(v, [&](float b0, float b1, float b2, Rgb& out) {
+      const Vec3f n = part.normals[i0] * b0 + part.normals[i1] * b1 + part.normals[i2] * b2;
+      if (leaf) {
+        const float u = part.uvs[i0][0] * b0 + part.uvs[i1][0] * b1 + part.uvs[i2][0] * b2;
+        const float w = part.uvs[i0][1] * b0 + part.uvs[i1][1] * b1 + part.uvs[i2][1] * b2;
+        if (!mesh::leaf_inside(u, w)) return false;  // the same alpha mask as the glTF texture
+        out = shade_leaf(view, n);
+      } else {
+        out = shade_bark(view, n);
+      }
+      return true;
+    });
+  }
+}
+
+}  // namespace
+
+std::vector<std::uint8_t> render_rgb(const mesh::TreeMesh& tree, const PreviewOptions& o) {
+  check(o);
+  const int f = o.supersample;
+  Raster raster(o.width * f, o.height * f, kBackground);
+  for (const View& view : make_views(tree, o.width, o.height)) {
+    draw_part(raster, view, tree.bark, false, f);
+    draw_part(raster, view, tree.leaves, true, f);
+  }
+  auto rgb = raster.resolve(f);
+  // A faint rule between the two views.
+  for (int y = 0; y < o.height; ++y) {
+    std::uint8_t* p = &rgb[(std::size_t(y) * o.width + o.width / 2) * 3];
+    p[0] = p[1] = p[2] = 205;
+  }
+  return rgb;
+}
+
+std::string render_png(const mesh::TreeMesh& tree, const PreviewOptions& o) {
+  const auto rgb = render_rgb(tree, o);
+  return encode_png(rgb.data(), o.width, o.height, 3);
+}
+
+void write_preview(const mesh::TreeMesh& tree, const std::string& path, const PreviewOptions& o) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".png") {
+    write_file_atomically(path, render_png(tree, o));
+  } else if (ext == ".svg") {
+    write_file_atomically(path, render_svg(tree, o));
+  } else {
+    throw std::invalid_argument("a preview file name must end in .png or .svg: " + path);
+  }
+}
+
+}  // namespace ramus::preview

@@ -1,0 +1,47 @@
+#include "backends/scanner/harness.h"
+
+#include <chrono>
+#include <cmath>
+
+namespace ramus::scanner {
+
+std::vector<Vec3> stations_around(const Skeleton& tree, int count) {
+  Vec3 lo, hi;
+  tree.bounds(lo, hi);
+  const double h = std::max(hi.z - lo.z, 1e-6);
+  const Vec3 c = (lo + hi) * 0.5;
+  std::vector<Vec3> out;
+  for (int k = 0; k < count; ++k) {
+    const double a = -M_PI / 2 + 2 * M_PI * k / count;
+    out.push_back({c.x + 1.5 * h * std::cos(a), c.y + 1.5 * h * std::sin(a), lo.z + 0.015 * h});
+  }
+  return out;
+}
+
+HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
+                          const ReconstructOptions& options) {
+  Vec3 lo, hi;
+  truth.bounds(lo, hi);
+  const double h = std::max(hi.z - lo.z, 1e-6);
+  ScanOptions so;
+  so.from = stations_around(truth, c.stations);
+  so.noise = c.noise * h;
+  so.density = c.density;
+  so.seed = c.seed;
+  const ScanResult scan = scan_skeleton(truth, so);
+  HarnessResult r;
+  r.points = scan.cloud.size();
+  const auto t0 = std::chrono::steady_clock::now();
+  const ReconstructResult rec = reconstruct(scan.cloud, options);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  r.trees = rec.trees.size();
+  CompareOptions co;
+  co.radius_factor = 2.0;
+  co.distance = 0.01 * h;
+  co.spacing = 0.002 * h;
+  co.min_radius = 0.5 * rec.voxel_size;
+  r.at_radius = compare_skeletons({truth}, rec.trees, co);
+  return r;
+}
+
+}  // namespace ramus::scanner

@@ -1,0 +1,39 @@
+// The accuracy harness of reconstruction: a grammar's tree -> simulated scan -> reconstruct() ->
+// comparison with the known skeleton. Shared by tests/backends/test_reconstruct_accuracy.cpp
+// and bench/bench_reconstruct.cpp.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "backends/scanner/scanner.h"
+#include "compiler/infer/reconstruct.h"
+#include "compiler/infer/reconstruct/compare.h"
+#include "core/skeleton.h"
+
+namespace ramus::scanner {
+
+struct HarnessCase {
+  int stations = 1;        // 1 or more stations evenly spaced around the tree
+  double noise = 0.003;    // range noise, as a fraction of the tree's height
+  double density = 3000;   // see ScanOptions::density
+  std::uint64_t seed = 1;
+};
+
+struct HarnessResult {
+  std::size_t points = 0;
+  std::size_t trees = 0;
+  SkeletonComparison at_radius;  // radius-relative and fixed-distance scores
+  double seconds = 0;            // reconstruction only
+};
+
+// Stations around the skeleton's base at 1.5 tree heights, tripod height, evenly spaced in
+// azimuth starting on the -y side.
+std::vector<Vec3> stations_around(const Skeleton& tree, int count);
+
+// Scans `truth`, reconstructs, compares. The fixed distance is 1% of the tree's height; truth
+// radii are floored at half a voxel (thinner twigs cannot be resolved by the voxel grid).
+HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
+                          const ReconstructOptions& options = {});
+
+}  // namespace ramus::scanner

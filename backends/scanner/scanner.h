@@ -1,0 +1,49 @@
+// The simulated terrestrial laser scanner: ray casts a tree's mesh from one or more stations on
+// a regular angular grid, with occlusion (nearest hit only), the density falloff with range that
+// angular sampling implies (spacing grows linearly with range), an optional range limit, and
+// Gaussian range noise. Used to make clouds with a known skeleton for the reconstruction tests.
+#pragma once
+
+#include <cstdint>
+#include <stdexcept>
+#include <vector>
+
+#include "core/point_cloud.h"
+#include "core/skeleton.h"
+#include "core/vec3.h"
+
+namespace ramus::scanner {
+
+struct ScanOptions {
+  // Station positions in world coordinates. Empty: one station on the -y side at the height of
+  // a tripod (1.5 % of the tree's height above its base), 1.5 tree heights away.
+  std::vector<Vec3> from;
+  double noise = 0.0;       // standard deviation of the range error
+  double density = 2000.0;  // points per unit area on a surface facing the station at the
+                            // distance of the tree's centre
+  double max_range = 0.0;   // returns farther than this are lost (0: no limit)
+  bool leaves = false;      // also scan the leaf cards
+  std::uint64_t max_rays = 200'000'000;  // per station; the angular step grows to respect it
+  std::uint64_t seed = 1;
+};
+
+struct ScanResult {
+  PointCloud cloud;  // scanner = the first station
+  std::uint64_t rays = 0;
+};
+
+struct ScanError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+// Scans triangles (world positions, index triples).
+ScanResult scan_triangles(const std::vector<Vec3>& vertices,
+                          const std::vector<std::uint32_t>& indices, const ScanOptions& options);
+
+// Meshes the skeleton with the mesh back end (bark tubes, leaves when asked) and scans it.
+ScanResult scan_skeleton(const Skeleton& skeleton, const ScanOptions& options);
+
+// Parses "x,y,z".
+Vec3 parse_position(const std::string& text);
+
+}  // namespace ramus::scanner

@@ -1,0 +1,105 @@
+// The ramus side of bench/lsystem_vs_lindenmayer.sh: derives one of the benchmark systems and
+// prints what the script compares (the same systems as bench/lindenmayer_runner.js).
+// usage: bench_lsystem CASE N [THREADS [REPEAT [--print]]]
+//   length L / modules_total T (sum of the lengths after each step) / seconds S (derivation,
+//   wall clock, mean of REPEAT runs) / cpu_seconds C (user + system time of all threads, mean) /
+//   string_bytes B / bytes_per_module b / bytes_per_parametric_module p / peak_rss_kb K
+// CPU time is what the comparison script ranks by: it does not depend on how busy the machine is.
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "compiler/derive.h"
+#include "compiler/pipeline.h"
+
+namespace {
+
+const char* source_of(const std::string& kase) {
+  if (kase == "a") {  // ABOP fig. 1.24f as a plain string system
+    return "lsystem a { angle 22.5; axiom X; X -> F - [ [ X ] + X ] + F [ + F X ] - X; F -> F F; }";
+  }
+  if (kase == "b") {  // parametric binary tree
+    return "lsystem b { axiom A(1); A(s) -> F(s) [ + A(s / 1.456) ] [ - A(s / 1.456) ]; }";
+  }
+  if (kase == "c1") {  // ABOP fig. 1.31a (0 and 1 are the modules Z and O here)
+    return R"(module Z, O;
+      lsystem c1 { ignore + - F; angle 22.5; axiom F O F O F O;
+        Z < Z > Z -> Z;  Z < Z > O -> O [ + F O F O ];  Z < O > Z -> O;  Z < O > O -> O;
+        O < Z > Z -> Z;  O < Z > O -> O F O;  O < O > Z -> O;  O < O > O -> Z;
+        + -> -;  - -> +; })";
+  }
+  if (kase == "c2") {
+    // Internodes F elongate only above a node I; F is ignored by contexts as in ABOP 1.31, so
+    // the left context of every F lies before its whole internode.
+    return "lsystem c2 { ignore + - F; axiom I F A; A -> I F [ + A ] I F A; I < F -> F F; }";
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+double cpu_seconds() {
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  return double(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
+         1e-6 * double(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+}
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: bench_lsystem CASE N [THREADS [REPEAT [--print]]]\n");
+    return 2;
+  }
+  const char* src = source_of(argv[1]);
+  if (!src) {
+    std::fprintf(stderr, "bench_lsystem: unknown case %s\n", argv[1]);
+    return 2;
+  }
+  ramus::SourceManager sources;
+  ramus::DiagnosticSink diags;
+  ramus::ir::Grammar g;
+  try {
+    g = ramus::lower_text(std::string(argv[1]) + ".ramus", src, {}, sources, diags);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "bench_lsystem: %s\n", e.what());
+    return 1;
+  }
+  ramus::DeriveOptions d;
+  d.steps = std::atoi(argv[2]);
+  d.threads = argc > 3 ? std::atoi(argv[3]) : 0;
+  d.max_modules = 1'000'000'000;
+  const int repeat = argc > 4 ? std::max(1, std::atoi(argv[4])) : 1;
+  ramus::DeriveStats st;
+  ramus::ModuleString s;
+  double wall = 0, cpu = 0;
+  for (int r = 0; r < repeat; ++r) {
+    s = ramus::ModuleString();
+    const double c0 = cpu_seconds();
+    s = ramus::derive(g, d, &st);
+    cpu += cpu_seconds() - c0;
+    wall += st.seconds;
+  }
+  std::size_t total = 0;
+  for (std::size_t k = 1; k < st.lengths.size(); ++k) total += st.lengths[k];
+  std::size_t parametric = 0;
+  for (std::size_t i = 0; i < s.size(); ++i) parametric += s.nparams(i) > 0;
+  rusage ru{};
+  getrusage(RUSAGE_SELF, &ru);
+  std::printf("length %zu\nmodules_total %zu\nseconds %.6f\ncpu_seconds %.6f\n", s.size(), total,
+              wall / repeat, cpu / repeat);
+  std::printf("string_bytes %zu\nbytes_per_module %.2f\n", s.bytes(),
+              double(s.bytes()) / double(s.size()));
+  if (parametric) {
+    std::printf("bytes_per_parametric_module %.2f\n",
+                double(ramus::module_bytes(s.param_count() / parametric)));
+  }
+  std::printf("peak_rss_kb %ld\n", ru.ru_maxrss);
+  if (argc > 5 && std::strcmp(argv[5], "--print") == 0) {
+    std::printf("string %s\n", ramus::to_text(g, s).c_str());
+  }
+  return 0;
+}

@@ -1,0 +1,370 @@
+#include "compiler/derive.h"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <exception>
+#include <new>
+#include <thread>
+
+#include "compiler/context.h"
+#include "compiler/expr_vm.h"
+
+namespace ramus {
+
+namespace {
+
+constexpr std::size_t kChunk = 1 << 15;  // modules per chunk: fixed, so output ignores threads
+
+std::string describe(const ir::Grammar& g, const ir::Production& p, const ExprError& e,
+                     const PassInfo& info, std::size_t i) {
+  return g.locations[g.codes[e.code].where] + ": " + e.what() + " in production `" + p.text +
+         "` (" + g.locations[p.where] + ") at " + info.where + ", module " + std::to_string(i);
+}
+
+// Everything a sweep reads; one per pass, shared read-only by the chunks.
+struct Pass {
+  const ir::Grammar& g;
+  const ir::Table& table;
+  const ModuleString& in;
+  const ContextTables* ctx;
+  const PassInfo& info;
+  PodVector<std::uint32_t> choice;  // per input module: 0 copy, else alternative + 1
+
+  // Picks the alternative for module i (0: copied). Guards and probabilities draw from the
+  // module's matching stream (seed, key, 2i).
+  std::uint32_t choose(std::size_t i, double* slots) const {
+    const ir::SymbolId s = in.symbol(i);
+    const std::uint32_t b = table.first[s], e = table.first[s + 1];
+    if (b == e) return 0;
+    LazyRng rng(info.seed, info.key, 2 * std::uint64_t(i));
+    for (std::uint32_t k = b; k < e; ++k) {
+      const ir::Production& p = g.productions[table.index[k]];
+      if (!match_production(g, p, in, ctx, i, slots)) continue;
+      try {
+        if (p.guard != ir::kNoCode && eval(g, p.guard, slots, rng) == 0) continue;
+        if (p.alt_end - p.alt_begin == 1 &&
+            g.alternatives[p.alt_begin].probability == ir::kNoCode) {
+          return p.alt_begin + 1;
+        }
+        return pick(p, slots, rng) + 1;
+      } catch (const ExprError& err) {
+        throw DeriveError(describe(g, p, err, info, i));
+      }
+    }
+    return 0;
+  }
+
+  // Stochastic choice: alternative k with probability p_k / sum(p) (ABOP ch. 1.7).
+  std::uint32_t pick(const ir::Production& p, const double* slots, LazyRng& rng) const {
+    double w[64];
+    double sum = 0;
+    const std::uint32_t n = std::min<std::uint32_t>(p.alt_end - p.alt_begin, 64);
+    for (std::uint32_t k = 0; k < n; ++k) {
+      const ir::CodeId c = g.alternatives[p.alt_begin + k].probability;
+      w[k] = c == ir::kNoCode ? 1.0 : eval(g, c, slots, rng);
+      if (w[k] < 0) throw ExprError("negative probability", c);
+      sum += w[k];
+    }
+    if (!(sum > 0))
+      throw ExprError("the probabilities sum to zero", g.alternatives[p.alt_begin].probability);
+    double u = rng.get().uniform01() * sum;
+    for (std::uint32_t k = 0; k < n; ++k) {
+      if (u < w[k]) return p.alt_begin + k;
+      u -= w[k];
+    }
+    for (std::uint32_t k = n; k-- > 0;) {
+      if (w[k] > 0) return p.alt_begin + k;  // rounding left u at the top end
+    }
+    return p.alt_begin;
+  }
+
+  // Per-chunk output sizes (filled by choose_chunk, then prefix-summed into offsets).
+  std::vector<std::uint64_t> mods, pars, hits;
+
+  // First sweep over chunk c: choose every module's alternative and count the output.
+  void choose_chunk(std::size_t c) {
+    double slots[ir::kMaxSlots];
+    std::uint64_t m = 0, p = 0, h = 0;
+    for (std::size_t i = c * kChunk, e = std::min(in.size(), i + kChunk); i < e; ++i) {
+      const std::uint32_t a = choose(i, slots);
+      choice[i] = a;
+      if (a == 0) {
+        m += 1;
+        p += in.nparams(i);
+      } else {
+        const ir::Alternative& alt = g.alternatives[a - 1];
+        m += alt.succ_end - alt.succ_begin;
+        p += alt.out_params;
+        ++h;
+      }
+    }
+    mods[c + 1] = m;
+    pars[c + 1] = p;
+    hits[c] = h;
+  }
+
+  // Second sweep over chunk c: write its modules at the offsets mods[c], pars[c].
+  void write_chunk(std::size_t c, ModuleString& out, const std::vector<std::uint32_t>* origins,
+                   std::uint32_t* new_origins) const {
+    double slots[ir::kMaxSlots];
+    ir::SymbolId* sym = out.symbols_data();
+    std::uint32_t* begins = out.begins_data();
+    double* params = out.params_data();
+    std::size_t o = mods[c];
+    std::uint32_t pofs = std::uint32_t(pars[c]);
+    for (std::size_t i = c * kChunk, e = std::min(in.size(), i + kChunk); i < e; ++i) {
+      const std::uint32_t a = choice[i];
+      std::size_t count = 1;
+      if (a == 0) {
+        sym[o] = in.symbol(i);
+        begins[o] = pofs;
+        const std::uint32_t np = in.nparams(i);
+        std::copy_n(in.params(i), np, params + pofs);
+        pofs += np;
+      } else {
+        const ir::Alternative& alt = g.alternatives[a - 1];
+        count = alt.succ_end - alt.succ_begin;
+        write(i, a - 1, sym + o, begins + o, params, pofs, slots);
+        pofs += alt.out_params;
+      }
+      if (new_origins) std::fill_n(new_origins + o, count, (*origins)[i]);
+      o += count;
+    }
+  }
+
+  // Writes module i's successor at sym/params/begins; arguments draw from (seed, key, 2i+1).
+  void write(std::size_t i, std::uint32_t alt_id, ir::SymbolId* sym, std::uint32_t* begins,
+             double* params, std::uint32_t pofs, double* slots) const {
+    const ir::Alternative& alt = g.alternatives[alt_id];
+    const ir::Production& p = g.productions[alt.production];
+    match_production(g, p, in, ctx, i, slots);  // re-binds the slots chosen in the first sweep
+    LazyRng rng(info.seed, info.key, 2 * std::uint64_t(i) + 1);
+    std::size_t o = 0;
+    try {
+      for (std::uint32_t m = alt.succ_begin; m < alt.succ_end; ++m, ++o) {
+        const ir::SuccModule& sm = g.successors[m];
+        sym[o] = sm.symbol;
+        begins[o] = pofs;
+        for (std::uint32_t a = 0; a < sm.nargs; ++a) {
+          params[pofs++] = eval(g, g.args[sm.arg_begin + a], slots, rng);
+        }
+      }
+    } catch (const ExprError& err) {
+      throw DeriveError(describe(g, p, err, info, i));
+    }
+  }
+};
+
+// Runs body(c) for chunks c = 0..nchunks-1 on `threads` threads; rethrows the error of the
+// lowest chunk so that the reported error does not depend on scheduling.
+template <typename Body>
+void for_chunks(std::size_t nchunks, int threads, const Body& body) {
+  std::vector<std::exception_ptr> errors(nchunks);
+  auto run = [&](std::size_t c) {
+    try {
+      body(c);
+    } catch (...) {
+      errors[c] = std::current_exception();
+    }
+  };
+  if (nchunks == 1 || threads == 1) {
+    for (std::size_t c = 0; c < nchunks; ++c) run(c);
+  } else {
+    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
+    arena.execute([&] {
+      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nchunks, 1),
+                        [&](const tbb::blocked_range<std::size_t>& r) {
+                          for (std::size_t c = r.begin(); c < r.end(); ++c) run(c);
+                        });
+    });
+  }
+  for (auto& e : errors) {
+    if (e) std::rethrow_exception(e);
+  }
+}
+
+std::string gigabytes(double bytes) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.2f GB", bytes / 1e9);
+  return buf;
+}
+
+void check_limits(const PassInfo& info, std::uint64_t modules, std::uint64_t params,
+                  std::size_t working) {
+  if (modules > info.max_modules) {
+    throw DeriveError(info.where + ": the string would grow to " + std::to_string(modules) +
+                      " modules, more than the limit of " + std::to_string(info.max_modules) +
+                      " (--max-modules)");
+  }
+  const std::uint64_t limit = info.max_bytes ? info.max_bytes : default_memory_limit();
+  const double need = double(working) + double(modules) * module_bytes(0) + double(params) * 8;
+  if (need > double(limit) || params > 0xffffffffull) {
+    throw DeriveError(info.where + ": the string would need " + gigabytes(need) + " (" +
+                      std::to_string(modules) + " modules), more than the memory limit of " +
+                      gigabytes(double(limit)));
+  }
+  if (info.peak_bytes) *info.peak_bytes = std::max(*info.peak_bytes, std::size_t(need));
+}
+
+}  // namespace
+
+std::uint64_t default_memory_limit() {
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+  if (pages <= 0 || page <= 0) return 8ull << 30;
+  return std::uint64_t(double(pages) * double(page) * 0.8);
+}
+
+bool apply_pass(const ir::Grammar& g, ir::Kind kind, const ModuleString& in, ModuleString& out,
+                const PassInfo& info, std::vector<std::uint32_t>* origins) {
+  const ir::Table& table = g.table(kind);
+  const std::size_t n = in.size();
+  if (table.empty() || n == 0) return false;
+  ContextTables ctx_tables;
+  if (table.has_context) ctx_tables.build(in, g.ignored, table.has_left, table.has_right);
+  Pass pass{g, table, in, table.has_context ? &ctx_tables : nullptr, info, {}, {}, {}, {}};
+  pass.choice.resize(n);
+
+  const std::size_t nchunks = (n + kChunk - 1) / kChunk;
+  pass.mods.assign(nchunks + 1, 0);
+  pass.pars.assign(nchunks + 1, 0);
+  pass.hits.assign(nchunks, 0);
+  for_chunks(nchunks, info.threads, [&](std::size_t c) { pass.choose_chunk(c); });
+  if (std::all_of(pass.hits.begin(), pass.hits.end(), [](std::uint64_t h) { return h == 0; })) {
+    return false;
+  }
+  for (std::size_t c = 0; c < nchunks; ++c) {  // output offsets of every chunk
+    pass.mods[c + 1] += pass.mods[c];
+    pass.pars[c + 1] += pass.pars[c];
+  }
+  const std::uint64_t total = pass.mods[nchunks], total_params = pass.pars[nchunks];
+  const std::size_t working =
+      in.bytes() + n * 4 + ctx_tables.bytes() + (origins ? (n + total) * 4 : 0);
+  check_limits(info, total, total_params, working);
+
+  std::vector<std::uint32_t> new_origins;
+  try {
+    out.clear();
+    out.resize_for_fill(total, total_params);
+    if (origins) new_origins.resize(total);
+  } catch (const std::bad_alloc&) {
+    throw DeriveError(info.where + ": out of memory for a string of " + std::to_string(total) +
+                      " modules");
+  }
+  for_chunks(nchunks, info.threads, [&](std::size_t c) {
+    pass.write_chunk(c, out, origins, origins ? new_origins.data() : nullptr);
+  });
+  if (origins) origins->swap(new_origins);
+  return true;
+}
+
+bool apply_cut(ModuleString& s) {
+  const ir::SymbolId* sym = s.symbols_data();
+  if (std::find(sym, sym + s.size(), ir::kCut) == sym + s.size()) return false;
+  ModuleString out;
+  out.reserve(s.size(), s.param_count());
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    if (s.symbol(i) != ir::kCut) {
+      out.push(s.symbol(i), s.params(i), s.nparams(i));
+      continue;
+    }
+    // Skip to the `]` closing this branch (kept), or to the end of the string.
+    int depth = 0;
+    std::size_t j = i + 1;
+    for (; j < s.size(); ++j) {
+      if (s.symbol(j) == ir::kPush) ++depth;
+      if (s.symbol(j) == ir::kPop && depth-- == 0) break;
+    }
+    i = j - 1;
+  }
+  s = std::move(out);
+  return true;
+}
+
+ModuleString axiom_string(const ir::Grammar& g) {
+  ModuleString s;
+  for (const ir::SuccModule& m : g.axiom) {
+    double p[ir::kMaxSlots];
+    for (std::uint32_t a = 0; a < m.nargs; ++a) {
+      LazyRng rng(g.settings.seed, 0, 0);
+      p[a] = eval(g, g.args[m.arg_begin + a], nullptr, rng);
+    }
+    s.push(m.symbol, p, m.nargs);
+  }
+  return s;
+}
+
+namespace {
+
+// Decomposition after a step: repeated passes until no decomposition applies, at most
+// max_depth of them (lpfg's decomposition depth), then the cut.
+void decompose_and_cut(const ir::Grammar& g, ModuleString& s, ModuleString& scratch, PassInfo info,
+                       int step, bool may_cut) {
+  const int limit = std::max(1, std::min(g.settings.max_depth, 255));
+  for (int round = 1; !g.decompose.empty(); ++round) {
+    if (round > limit) {
+      throw DeriveError("decomposition after step " + std::to_string(step) +
+                        " still applies after max_depth = " + std::to_string(limit) + " rounds");
+    }
+    info.key = std::uint64_t(step) * 512 + round;
+    info.where =
+        "decomposition round " + std::to_string(round) + " of step " + std::to_string(step);
+    if (!apply_pass(g, ir::Kind::Decompose, s, scratch, info)) break;
+    std::swap(s, scratch);
+  }
+  if (may_cut) apply_cut(s);
+}
+
+// Whether a `%` can ever appear in the string (else the cut's scan is skipped).
+bool may_cut(const ir::Grammar& g) {
+  auto is_cut = [](const ir::SuccModule& m) { return m.symbol == ir::kCut; };
+  return std::any_of(g.axiom.begin(), g.axiom.end(), is_cut) ||
+         std::any_of(g.successors.begin(), g.successors.end(), is_cut);
+}
+
+}  // namespace
+
+ModuleString derive(const ir::Grammar& g, const DeriveOptions& options, DeriveStats* stats) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int steps = options.steps.value_or(g.settings.derive);
+  if (g.selection != ir::Selection::FirstMatch) {
+    throw DeriveError("rule selection `select nearest` is not supported by derivation yet");
+  }
+  if (steps < 0) throw DeriveError("the number of steps must not be negative");
+  std::size_t peak = 0;
+  PassInfo info;
+  info.seed = options.seed.value_or(g.settings.seed);
+  info.max_modules = options.max_modules;
+  info.max_bytes = options.max_bytes;
+  info.threads = options.threads;
+  info.peak_bytes = &peak;
+
+  ModuleString s = axiom_string(g), next;
+  if (s.size() > options.max_modules) throw DeriveError("the axiom is longer than --max-modules");
+  const bool cut = may_cut(g);
+  decompose_and_cut(g, s, next, info, 0, cut);
+  if (stats) stats->lengths.assign(1, s.size());
+  for (int step = 1; step <= steps; ++step) {
+    info.key = std::uint64_t(step) * 512;
+    info.where = "step " + std::to_string(step);
+    if (apply_pass(g, ir::Kind::Rewrite, s, next, info)) {
+      std::swap(s, next);
+      next.clear();
+    }
+    decompose_and_cut(g, s, next, info, step, cut);
+    if (stats) stats->lengths.push_back(s.size());
+  }
+  peak = std::max(peak, s.bytes());
+  if (stats) {
+    stats->steps = steps;
+    stats->peak_bytes = peak;
+    stats->seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  }
+  return s;
+}
+
+}  // namespace ramus

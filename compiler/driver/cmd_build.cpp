@@ -1,0 +1,106 @@
+// ramus build FILE -o OUT.glb|.gltf|.obj|.ply [--target mesh] [--lod N] [--seed S] [-n N]
+//                  [-D name=value]... [--system NAME] [--pipe-exponent E] [--leaves quad|crossed]
+//                  [--leaf-scale K]
+// Grows the grammar and writes its tree as a mesh (docs/mesh.md). glTF gets the levels of
+// detail LOD0..LOD N as separate meshes; OBJ and PLY hold one mesh, level N.
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
+#include "backends/mesh/gltf_writer.h"
+#include "backends/mesh/openmesh_writer.h"
+#include "backends/mesh/tree_mesh.h"
+#include "compiler/driver/grow_args.h"
+
+namespace ramus::cli {
+namespace {
+
+struct BuildArgs {
+  GrowArgs grow;
+  std::string output;
+  std::string target = "mesh";
+  int lod = 0;
+  double pipe_exponent = 0;
+  std::string leaves = "quad";
+  double leaf_scale = 1;
+};
+
+std::string extension(const std::string& path) {
+  return std::filesystem::path(path).extension().string();
+}
+
+void print_warnings(const mesh::MeshReport& report) {
+  for (const std::string& w : report.warnings())
+    std::fprintf(stderr, "ramus: warning: %s\n", w.c_str());
+}
+
+int run_build(const BuildArgs& a, const GlobalOptions& global) {
+  const std::optional<Skeleton> skeleton = grow_for_cli(a.grow);
+  if (!skeleton) return 1;
+  mesh::MeshOptions o;
+  o.name = std::filesystem::path(a.grow.file).stem().string();
+  o.pipe_exponent = a.pipe_exponent;
+  o.leaf_style = a.leaves == "crossed" ? mesh::LeafStyle::kCrossed : mesh::LeafStyle::kQuad;
+  o.leaf_scale = a.leaf_scale;
+  const std::string ext = extension(a.output);
+  const bool gltf = ext == ".glb" || ext == ".gltf";
+  mesh::MeshReport report;
+  std::size_t triangles = 0;
+  try {
+    if (gltf) {
+      o.lod_count = a.lod + 1;
+      const auto lods = mesh::build_tree_lods(*skeleton, o, &report);
+      print_warnings(report);
+      mesh::write_gltf(lods, a.output);
+      triangles = lods.front().triangle_count();
+    } else {
+      const mesh::TreeMesh m = mesh::build_tree_mesh(*skeleton, o, a.lod, &report);
+      print_warnings(report);
+      mesh::write_openmesh(m, a.output);
+      triangles = m.triangle_count();
+    }
+  } catch (const mesh::MeshError& e) {
+    throw UserError(e.what());
+  }
+  if (!global.quiet) {
+    std::fprintf(stderr, "ramus: wrote %s (%zu nodes, %zu organs, %zu triangles at LOD%d)\n",
+                 a.output.c_str(), skeleton->size(), skeleton->organs.size(), triangles,
+                 gltf ? 0 : a.lod);
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_build(CLI::App& app, const GlobalOptions& global, std::function<int()>& run) {
+  auto args = std::make_shared<BuildArgs>();
+  CLI::App* sub = app.add_subcommand("build", "compile a grammar into an asset (a tree mesh)");
+  add_grow_options(sub, args->grow);
+  sub->add_option("-o,--output", args->output, "output: .glb, .gltf (+ .bin), .obj (+ .mtl), .ply")
+      ->required()
+      ->check(CLI::Validator(
+          [](const std::string& p) -> std::string {
+            const std::string e = extension(p);
+            return e == ".glb" || e == ".gltf" || e == ".obj" || e == ".ply"
+                       ? ""
+                       : "the output must end in .glb, .gltf, .obj or .ply";
+          },
+          "FILE", "mesh file"));
+  // The targets later back ends add (pieces, binary, voxels) join this list.
+  sub->add_option("--target", args->target, "what to build (default: mesh)")
+      ->check(CLI::IsMember({"mesh"}));
+  sub->add_option("--lod", args->lod, "levels of detail: glTF gets LOD0..LOD N, OBJ/PLY level N")
+      ->check(CLI::Range(0, 7));
+  sub->add_option("--pipe-exponent", args->pipe_exponent,
+                  "radii by the pipe model r^e = sum r_child^e (2 da Vinci, 2.5 Livny); "
+                  "default: the turtle's widths")
+      ->check(CLI::Range(1.0, 10.0));
+  sub->add_option("--leaves", args->leaves, "leaf cards: quad or crossed")
+      ->check(CLI::IsMember({"quad", "crossed"}));
+  sub->add_option("--leaf-scale", args->leaf_scale, "leaf length per unit of organ size")
+      ->check(CLI::PositiveNumber);
+  sub->callback(
+      [args, &global, &run] { run = [args, &global] { return run_build(*args, global); }; });
+}
+
+}  // namespace ramus::cli

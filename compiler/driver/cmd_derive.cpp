@@ -1,0 +1,141 @@
+// ramus derive FILE [-n N] [--seed S] [-D name=value]... [--system NAME] [--max-modules N]
+//                   [--threads T] [--print | --stats | --skeleton OUT.json]
+// Derives an lsystem and prints its string (ABOP notation), its statistics, or writes the
+// turtle's skeleton as JSON (formats/skeleton_json.h). The --stats lines are a contract read by
+// tests:
+//   length <modules> / count <symbol> <n> (by name, byte order) / sum F.<k> <value> /
+//   steps <n> / time <seconds> s
+#include <charconv>
+#include <cstdio>
+#include <map>
+#include <optional>
+#include <string>
+
+#include "compiler/derive.h"
+#include "compiler/driver/command.h"
+#include "compiler/driver/defines.h"
+#include "compiler/grow.h"
+#include "compiler/pipeline.h"
+#include "compiler/turtle.h"
+#include "core/atomic_file.h"
+#include "formats/skeleton_json.h"
+
+namespace ramus::cli {
+
+namespace {
+
+struct DeriveArgs {
+  std::string file;
+  std::optional<int> steps;
+  std::optional<std::uint64_t> seed;
+  std::vector<std::string> defines;
+  std::string system;
+  std::uint64_t max_modules = 100'000'000;
+  int threads = 0;
+  bool print = false, stats = false;
+  std::string skeleton;
+};
+
+std::string num(double v) {
+  char buf[64];
+  auto r = std::to_chars(buf, buf + sizeof buf, v);
+  return std::string(buf, r.ptr);
+}
+
+void print_stats(const ir::Grammar& g, const ModuleString& s, const DeriveStats& st) {
+  std::vector<std::uint64_t> counts(g.symbols.size(), 0);
+  // One sum per parameter F takes in the grammar, even when no F is in the string (yet).
+  const int f_arity = g.symbols[ir::SymbolId(ir::TurtleOp::Forward)].arity;
+  std::vector<double> f_sums(f_arity > 0 ? std::size_t(f_arity) : 0, 0.0);
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    ++counts[s.symbol(i)];
+    if (s.symbol(i) != ir::SymbolId(ir::TurtleOp::Forward)) continue;
+    const std::uint32_t n = s.nparams(i);
+    if (f_sums.size() < n) f_sums.resize(n, 0.0);
+    for (std::uint32_t k = 0; k < n; ++k) f_sums[k] += s.param(i, k);
+  }
+  std::map<std::string, std::uint64_t> by_name;
+  for (std::size_t k = 0; k < counts.size(); ++k) {
+    if (counts[k]) by_name[g.symbols[k].name] = counts[k];
+  }
+  std::string out = "length " + std::to_string(s.size()) + "\n";
+  for (const auto& [name, n] : by_name) out += "count " + name + " " + std::to_string(n) + "\n";
+  for (std::size_t k = 0; k < f_sums.size(); ++k) {
+    out += "sum F." + std::to_string(k) + " " + num(f_sums[k]) + "\n";
+  }
+  char t[64];
+  std::snprintf(t, sizeof t, "time %.6f s\n", st.seconds);
+  out += "steps " + std::to_string(st.steps) + "\n" + t;
+  std::fwrite(out.data(), 1, out.size(), stdout);
+}
+
+int run_derive(const DeriveArgs& a) {
+  GrowOptions opt;
+  opt.system = a.system;
+  opt.steps = a.steps;
+  opt.seed = a.seed;
+  opt.defines = parse_defines(a.defines);
+  opt.max_modules = a.max_modules;
+  SourceManager sources;
+  DiagnosticSink diags;
+  ir::Grammar g;
+  try {
+    g = lower_file(a.file, opt, sources, diags);
+  } catch (const GrowError& e) {
+    diags.sort();
+    std::string text = render_text(sources, diags.all());
+    std::fputs(text.c_str(), stderr);
+    if (!diags.has_errors()) throw UserError(e.what());
+    return 1;
+  }
+  if (!diags.all().empty()) std::fputs(render_text(sources, diags.all()).c_str(), stderr);
+  DeriveOptions d;
+  d.steps = a.steps;
+  d.max_modules = a.max_modules;
+  d.threads = a.threads;
+  DeriveStats st;
+  try {
+    ModuleString s = derive(g, d, &st);
+    if (a.stats) {
+      print_stats(g, s, st);
+    } else if (!a.skeleton.empty()) {
+      TurtleOptions t;
+      t.seed = g.settings.seed;
+      t.steps = st.steps;
+      t.max_modules = a.max_modules;
+      t.threads = a.threads;
+      write_skeleton_json(a.skeleton, interpret(g, s, t));
+    } else {
+      std::string text = to_text(g, s);
+      text += '\n';
+      std::fwrite(text.data(), 1, text.size(), stdout);
+    }
+  } catch (const DeriveError& e) {
+    throw UserError(e.what());
+  }
+  return 0;
+}
+
+}  // namespace
+
+void add_derive(CLI::App& app, const GlobalOptions&, std::function<int()>& run) {
+  auto args = std::make_shared<DeriveArgs>();
+  CLI::App* sub = app.add_subcommand("derive", "derive an lsystem: print its string or counts");
+  sub->add_option("file", args->file, "grammar file (.ramus)")->required();
+  sub->add_option("-n,--steps", args->steps, "derivation steps (default: the grammar's derive)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--seed", args->seed, "random seed (default: the grammar's seed)");
+  sub->add_option("-D,--define", args->defines, "override a param: name=value");
+  sub->add_option("--system", args->system, "lsystem block (default: the first)");
+  sub->add_option("--max-modules", args->max_modules, "stop with an error above this length");
+  sub->add_option("--threads", args->threads, "threads (default: all cores)")
+      ->check(CLI::NonNegativeNumber);
+  auto* p = sub->add_flag("--print", args->print, "print the string in ABOP notation (default)");
+  auto* s = sub->add_flag("--stats", args->stats, "print length, symbol counts, sums, time");
+  auto* k = sub->add_option("--skeleton", args->skeleton, "write the turtle's skeleton as JSON");
+  p->excludes(s)->excludes(k);
+  s->excludes(k);
+  sub->callback([args, &run] { run = [args] { return run_derive(*args); }; });
+}
+
+}  // namespace ramus::cli

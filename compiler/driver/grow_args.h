@@ -1,0 +1,31 @@
+// The options every subcommand that grows a grammar into a tree shares (build, preview):
+// FILE [-n N] [--seed S] [-D name=value]... [--system NAME] [--max-modules N].
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "compiler/driver/command.h"
+#include "core/skeleton.h"
+
+namespace ramus::cli {
+
+struct GrowArgs {
+  std::string file;
+  std::optional<int> steps;
+  std::optional<std::uint64_t> seed;
+  std::vector<std::string> defines;
+  std::string system;
+  std::uint64_t max_modules = 100'000'000;
+};
+
+void add_grow_options(CLI::App* sub, GrowArgs& args);
+
+// Grows the grammar. On errors in the grammar prints the diagnostics to stderr and returns
+// nullopt (the caller exits with 1); warnings are printed and growing goes on. Derivation
+// failures throw UserError.
+std::optional<Skeleton> grow_for_cli(const GrowArgs& args);
+
+}  // namespace ramus::cli

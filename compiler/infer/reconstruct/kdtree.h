@@ -1,0 +1,41 @@
+// A nanoflann k-d tree over a vector of Eigen points (or a subset of them, by index).
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <memory>
+#include <nanoflann.hpp>
+#include <vector>
+
+namespace ramus::bsg {
+
+class PointIndex {
+ public:
+  // Indexes pts[ids[i]] (all of pts when ids is empty). Both must outlive the index.
+  explicit PointIndex(const std::vector<Eigen::Vector3d>& pts,
+                      std::vector<std::uint32_t> ids = {});
+
+  std::size_t size() const { return ids_.empty() ? pts_.size() : ids_.size(); }
+  // Up to k nearest (original indices into pts) with squared distances, nearest first.
+  std::size_t knn(const Eigen::Vector3d& q, std::size_t k, std::uint32_t* out, double* d2) const;
+  // The nearest point's index, or kNone when the index is empty.
+  std::uint32_t nearest(const Eigen::Vector3d& q, double* d2 = nullptr) const;
+
+  // nanoflann's dataset interface.
+  std::size_t kdtree_get_point_count() const { return size(); }
+  double kdtree_get_pt(std::size_t i, std::size_t dim) const { return at(i)[int(dim)]; }
+  template <class B>
+  bool kdtree_get_bbox(B&) const { return false; }
+
+ private:
+  const Eigen::Vector3d& at(std::size_t i) const { return ids_.empty() ? pts_[i] : pts_[ids_[i]]; }
+  std::uint32_t original(std::size_t i) const { return ids_.empty() ? std::uint32_t(i) : ids_[i]; }
+
+  using Tree = nanoflann::KDTreeSingleIndexAdaptor<
+      nanoflann::L2_Simple_Adaptor<double, PointIndex>, PointIndex, 3, std::uint32_t>;
+  const std::vector<Eigen::Vector3d>& pts_;
+  std::vector<std::uint32_t> ids_;
+  std::unique_ptr<Tree> tree_;
+};
+
+}  // namespace ramus::bsg

@@ -1,0 +1,41 @@
+#include "compiler/module_string.h"
+
+#include <cctype>
+#include <charconv>
+
+namespace ramus {
+
+namespace {
+bool is_word(const std::string& name) {
+  return !name.empty() && (std::isalpha(static_cast<unsigned char>(name[0])) || name[0] == '_');
+}
+}  // namespace
+
+std::string to_text(const ir::Grammar& g, const ModuleString& s) {
+  std::string out;
+  out.reserve(s.size() * 2);
+  char buf[64];
+  const std::string* prev = nullptr;  // name of the previous module when it had no parameters
+  for (std::size_t i = 0; i < s.size(); ++i) {
+    const std::string& name = g.symbols[s.symbol(i)].name;
+    // A declared multi-letter name next to another name would read as different modules
+    // (`Apex B` is not `ApexB`): separate such neighbours with a blank.
+    if (prev && (prev->size() > 1 || name.size() > 1) && is_word(*prev) && is_word(name)) {
+      out += ' ';
+    }
+    out += name;
+    const std::uint32_t n = s.nparams(i);
+    prev = n == 0 ? &name : nullptr;
+    if (n == 0) continue;
+    out += '(';
+    for (std::uint32_t k = 0; k < n; ++k) {
+      if (k) out += ',';
+      auto r = std::to_chars(buf, buf + sizeof buf, s.param(i, k));
+      out.append(buf, r.ptr);
+    }
+    out += ')';
+  }
+  return out;
+}
+
+}  // namespace ramus

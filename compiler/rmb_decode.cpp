@@ -1,0 +1,349 @@
+// Decoder of the .rmb format (docs/binary-format.md). Reads the header and checks the CRC-32
+// before anything else, then the sections in their fixed order, each through a Reader bounded
+// to the section, checking every id and range as it is read; expressions are verified last
+// (compiler/rmb_verify.cpp) once every array they point into is known.
+#include <set>
+
+#include "compiler/rmb_codec.h"
+#include "compiler/rmb_verify.h"
+
+namespace ramus {
+
+namespace {
+
+using rmb::Reader;
+
+constexpr std::size_t kMaxFile = std::size_t(64) << 20;
+constexpr std::size_t kMaxString = std::size_t(1) << 20;
+constexpr std::size_t kHeader = 8, kTrailer = 4;
+constexpr std::size_t kSectionCount = 9;  // Meta .. Ignored, all required in version 1
+
+struct Decoder {
+  std::string_view bytes;
+  std::vector<rmb::TraceEntry>* trace;
+  ir::Grammar g;
+  std::vector<std::size_t> code_at;  // byte offset of each code record, for error messages
+
+  Reader section(std::size_t b, std::size_t e) { return Reader(bytes, b, e, trace); }
+
+  void meta(Reader& r) {
+    g.name = r.str("name", kMaxString);
+    const std::uint8_t sel = r.u8("selection");
+    if (sel > std::uint8_t(ir::Selection::Nearest)) r.fail("expected selection 0 or 1");
+    g.selection = ir::Selection(sel);
+    ir::Settings& s = g.settings;
+    const std::int64_t derive = r.svarint("derive");
+    if (derive < 0 || derive > 1'000'000) r.fail("expected derive in 0..1000000");
+    s.derive = int(derive);
+    s.seed = r.varint("seed");
+    s.angle = r.f64("angle");
+    s.step = r.f64("step");
+    s.width = r.f64("width");
+    s.width_decay = r.f64("width_decay");
+    s.tropism[0] = r.f64("tropism.x");
+    s.tropism[1] = r.f64("tropism.y");
+    s.tropism[2] = r.f64("tropism.z");
+    s.elasticity = r.f64("elasticity");
+    const std::int64_t depth = r.svarint("max_depth");
+    if (depth < 0 || depth > 255) r.fail("expected max_depth in 0..255");
+    s.max_depth = int(depth);
+  }
+
+  std::int16_t arity(Reader& r) {
+    const std::size_t at = r.pos();
+    const std::int64_t a = r.svarint("arity");
+    if (a < -1 || a > 32767) r.fail_at(at, "expected an arity in -1..32767");
+    return std::int16_t(a);
+  }
+
+  void symbols(Reader& r) {
+    const std::size_t extra = r.count("extra symbols", 65536 - ir::kTurtleSymbolCount, 2);
+    g = [&] {
+      ir::Grammar fresh = ir::make_grammar(g.name);
+      fresh.selection = g.selection;
+      fresh.settings = g.settings;
+      return fresh;
+    }();
+    for (int i = 0; i < ir::kTurtleSymbolCount; ++i) g.symbols[i].arity = arity(r);
+    std::set<std::string> seen(std::begin(ir::kTurtleNames), std::end(ir::kTurtleNames));
+    for (std::size_t i = 0; i < extra; ++i) {
+      r.heading("symbol " + std::to_string(ir::kTurtleSymbolCount + i));
+      const std::size_t at = r.pos();
+      ir::Symbol s;
+      s.name = r.str("name", 4096);
+      if (s.name.empty() || !seen.insert(s.name).second) {
+        r.fail_at(at, "expected a new, non-empty symbol name, found \"" + s.name + "\"");
+      }
+      s.arity = arity(r);
+      g.symbols.push_back(std::move(s));
+      g.ignored.push_back(0);
+    }
+  }
+
+  void constants(Reader& r) {
+    const std::size_t n = r.count("constants", kMaxFile, 10);
+    for (std::size_t i = 0; i < n; ++i) {
+      r.heading("constant " + std::to_string(i));
+      ir::Constant c;
+      c.name = r.str("name", 4096);
+      c.value = r.f64("value");
+      const std::uint8_t p = r.u8("is_param");
+      if (p > 1) r.fail("expected is_param 0 or 1");
+      c.is_param = p == 1;
+      g.constants.push_back(std::move(c));
+    }
+  }
+
+  void locations(Reader& r) {
+    const std::size_t n = r.count("locations", kMaxFile);
+    g.locations.reserve(n);
+    for (std::size_t i = 0; i < n; ++i) g.locations.push_back(r.str("location", kMaxString));
+  }
+
+  void bytecode(Reader& r) {
+    const std::size_t nc = r.count("constant pool size", kMaxFile, 8);
+    g.consts.reserve(nc);
+    for (std::size_t i = 0; i < nc; ++i) g.consts.push_back(r.f64("const"));
+    const std::size_t ni = r.count("instructions", kMaxFile);
+    g.code.reserve(ni);
+    for (std::size_t i = 0; i < ni; ++i) {
+      const std::uint8_t op = r.u8("op");
+      if (op > std::uint8_t(ir::Op::Call)) r.fail_at(r.pos() - 1, "expected an opcode <= 20");
+      ir::Instr in{ir::Op(op), 0};
+      if (rmb_has_operand(in.op)) in.a = std::uint32_t(r.bounded("operand", 0xFFFFFFFEu));
+      g.code.push_back(in);
+    }
+  }
+
+  std::uint32_t location(Reader& r) {
+    return std::uint32_t(r.bounded("where", g.locations.empty() ? 0 : g.locations.size() - 1));
+  }
+
+  void codes(Reader& r) {
+    const std::size_t n = r.count("codes", kMaxFile, 5);
+    std::int64_t prev_end = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      r.heading("code " + std::to_string(i));
+      code_at.push_back(r.pos());
+      ir::Code c;
+      const std::int64_t begin = prev_end + r.svarint("begin delta");
+      const std::uint64_t len = r.varint("length");
+      if (begin < 0 || std::uint64_t(begin) > g.code.size() || len > g.code.size() - begin) {
+        r.fail_at(code_at.back(), "expected a code range inside the " +
+                                      std::to_string(g.code.size()) + " instructions");
+      }
+      c.begin = std::uint32_t(begin);
+      c.end = std::uint32_t(begin + std::int64_t(len));
+      prev_end = c.end;
+      c.max_stack = std::uint16_t(r.bounded("max_stack", kRmbMaxStack));
+      const std::uint8_t flags = r.u8("shape | random << 2");
+      if (flags > 7) r.fail_at(r.pos() - 1, "expected shape flags <= 7");
+      c.shape = ir::Code::Shape(flags & 3);
+      c.random = flags & 4;
+      using Shape = ir::Code::Shape;
+      if (c.shape == Shape::Constant || c.shape == Shape::ParamOpConst) c.value = r.f64("value");
+      if (c.shape == Shape::Param || c.shape == Shape::ParamOpConst) {
+        c.slot = std::uint32_t(r.bounded("slot", ir::kMaxSlots - 1));
+      }
+      if (c.shape == Shape::ParamOpConst) {
+        const std::uint8_t op = r.u8("op");
+        if (op < std::uint8_t(ir::Op::Add) || op > std::uint8_t(ir::Op::Div)) {
+          r.fail_at(r.pos() - 1, "expected op add, sub, mul or div");
+        }
+        c.op = ir::Op(op);
+      }
+      c.where = location(r);
+      g.codes.push_back(c);
+    }
+  }
+
+  ir::CodeId code_id(Reader& r, const char* field) {
+    if (g.codes.empty()) r.fail("expected a code id, but the grammar has no codes");
+    return ir::CodeId(r.bounded(field, g.codes.size() - 1));
+  }
+  ir::CodeId optional_code(Reader& r, const char* field) {
+    const std::uint64_t v = r.bounded(field, g.codes.size());
+    return v == 0 ? ir::kNoCode : ir::CodeId(v - 1);
+  }
+  ir::SymbolId symbol(Reader& r) {
+    return ir::SymbolId(r.bounded("symbol", g.symbols.size() - 1));
+  }
+
+  ir::Pattern pattern(Reader& r) {
+    ir::Pattern p;
+    p.symbol = symbol(r);
+    const std::uint64_t np = r.bounded("nparams + 1 (0: any)", ir::kMaxSlots + 1);
+    if (np > 0) {
+      p.any_params = false;
+      p.nparams = std::uint16_t(np - 1);
+      p.first_slot = std::uint16_t(r.bounded("first_slot", ir::kMaxSlots - p.nparams));
+    }
+    return p;
+  }
+
+  void patterns(Reader& r, const char* field, std::vector<ir::Pattern>& out) {
+    const std::size_t n = r.count(field, 4096, 2);
+    for (std::size_t i = 0; i < n; ++i) out.push_back(pattern(r));
+  }
+
+  // Modules with their argument codes appended to g.args; returns the parameters written.
+  std::uint32_t modules(Reader& r, std::vector<ir::SuccModule>& out, std::uint32_t max_args) {
+    const std::size_t n = r.count("modules", kMaxFile, 2);
+    std::uint32_t params = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      ir::SuccModule m;
+      m.symbol = symbol(r);
+      m.nargs = std::uint16_t(r.count("nargs", max_args));
+      m.arg_begin = std::uint32_t(g.args.size());
+      for (std::uint32_t k = 0; k < m.nargs; ++k) g.args.push_back(code_id(r, "arg code"));
+      params += m.nargs;
+      out.push_back(m);
+    }
+    return params;
+  }
+
+  void productions(Reader& r) {
+    const std::size_t n = r.count("productions", kMaxFile, 10);
+    for (std::size_t i = 0; i < n; ++i) {
+      r.heading("production " + std::to_string(i));
+      ir::Production p;
+      const std::uint8_t kind = r.u8("kind");
+      if (kind > std::uint8_t(ir::Kind::Decompose)) r.fail_at(r.pos() - 1, "expected kind 0..2");
+      p.kind = ir::Kind(kind);
+      p.predecessor = pattern(r);
+      patterns(r, "left context", p.left);
+      patterns(r, "right context", p.right);
+      p.guard = optional_code(r, "guard + 1 (0: none)");
+      p.nslots = std::uint16_t(r.bounded("nslots", ir::kMaxSlots));
+      p.where = location(r);
+      p.text = r.str("text", kMaxString);
+      const std::size_t na = r.count("alternatives", kMaxFile, 2);
+      p.alt_begin = std::uint32_t(g.alternatives.size());
+      for (std::size_t a = 0; a < na; ++a) {
+        r.heading("alternative " + std::to_string(a));
+        ir::Alternative alt;
+        alt.production = std::uint32_t(i);
+        alt.probability = optional_code(r, "probability + 1 (0: none)");
+        alt.succ_begin = std::uint32_t(g.successors.size());
+        alt.out_params = modules(r, g.successors, 65535);
+        alt.succ_end = std::uint32_t(g.successors.size());
+        g.alternatives.push_back(alt);
+      }
+      p.alt_end = std::uint32_t(g.alternatives.size());
+      g.productions.push_back(std::move(p));
+    }
+  }
+
+  void axiom(Reader& r) { modules(r, g.axiom, ir::kMaxSlots); }
+
+  void ignored(Reader& r) {
+    const std::size_t n = r.count("ignored symbols", g.symbols.size());
+    std::uint64_t next = 0;  // the smallest id the next entry may name
+    for (std::size_t i = 0; i < n; ++i) {
+      const std::uint64_t id = next + r.bounded("id delta", g.symbols.size() - 1 - next);
+      g.ignored[id] = 1;
+      next = id + 1;
+      if (i + 1 < n && next >= g.symbols.size()) r.fail("expected no more ignored symbols");
+    }
+  }
+
+  void run_section(RmbSection id, Reader& r) {
+    switch (id) {
+      case RmbSection::Meta: return meta(r);
+      case RmbSection::Symbols: return symbols(r);
+      case RmbSection::Constants: return constants(r);
+      case RmbSection::Locations: return locations(r);
+      case RmbSection::Bytecode: return bytecode(r);
+      case RmbSection::Codes: return codes(r);
+      case RmbSection::Productions: return productions(r);
+      case RmbSection::Axiom: return axiom(r);
+      case RmbSection::Ignored: return ignored(r);
+      default: r.fail("expected a known section");
+    }
+  }
+};
+
+const char* section_name(std::size_t id) {
+  static const char* kNames[] = {"?",     "meta",        "symbols", "constants", "locations",
+                                 "bytecode", "codes", "productions", "axiom",   "ignored"};
+  return id < std::size(kNames) ? kNames[id] : "reserved";
+}
+
+void check_header(Reader& r, std::string_view bytes, const RmbDecodeOptions& options) {
+  if (bytes.size() > kMaxFile) r.fail("expected a file of at most 64 MiB");
+  if (r.raw("magic", 4) != std::string_view("RMB\x1a", 4)) r.fail_at(0, "expected magic \"RMB\\x1a\"");
+  const std::uint16_t version = r.u16("version");
+  if (version != kRmbVersion) r.fail_at(4, "expected format version 1, found " + std::to_string(version));
+  const std::uint16_t flags = r.u16("flags");
+  if (flags != 0) r.fail_at(6, "expected flags 0 (quantization and compression are not defined in version 1)");
+  if (bytes.size() < kHeader + kTrailer) r.fail_at(bytes.size(), "expected at least 12 bytes");
+  Reader tail(bytes, bytes.size() - kTrailer, bytes.size(), nullptr);
+  const std::uint32_t stored = tail.u32("crc32");
+  const std::uint32_t actual = rmb::crc32(bytes.substr(0, bytes.size() - kTrailer));
+  if (options.verify_checksum && stored != actual) {
+    r.fail_at(bytes.size() - kTrailer, "expected CRC-32 " + std::to_string(actual) + ", found " +
+                                           std::to_string(stored) + " (the file is corrupted)");
+  }
+}
+
+}  // namespace
+
+ir::Grammar decode_rmb(std::string_view bytes, const RmbDecodeOptions& options,
+                       std::vector<rmb::TraceEntry>* trace) {
+  Decoder d{bytes, trace, {}, {}};
+  const std::size_t body_end = bytes.size() >= kTrailer ? bytes.size() - kTrailer : 0;
+  Reader r(bytes, 0, body_end, trace);
+  r.heading("header");
+  check_header(r, bytes, options);
+  const std::size_t n = r.count("section count", 255, 3);
+  if (n != kSectionCount) r.fail("expected 9 sections, found " + std::to_string(n));
+  std::size_t expect_at = 0;  // sections are contiguous, right after the table
+  std::vector<std::pair<std::size_t, std::size_t>> ranges;
+  for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t at = r.pos();
+    const std::uint64_t id = r.varint("section id");
+    if (id != i + 1) r.fail_at(at, "expected section id " + std::to_string(i + 1) + " (" + section_name(i + 1) + "), found " + std::to_string(id));
+    const std::uint64_t off = r.varint("offset");
+    const std::uint64_t len = r.bounded("length", body_end);
+    if (i > 0 && off != expect_at) r.fail_at(at, "expected section offset " + std::to_string(expect_at));
+    if (off > body_end || len > body_end - off) r.fail_at(at, "expected a section inside the file");
+    ranges.emplace_back(std::size_t(off), std::size_t(off + len));
+    expect_at = std::size_t(off + len);
+  }
+  if (ranges.front().first != r.pos()) r.fail("expected the first section right after the table");
+  if (expect_at != body_end) r.fail_at(expect_at, "expected the CRC-32 right after the last section");
+  for (std::size_t i = 0; i < n; ++i) {
+    Reader s = d.section(ranges[i].first, ranges[i].second);
+    s.heading(std::string("section ") + std::to_string(i + 1) + ": " + section_name(i + 1));
+    d.run_section(RmbSection(i + 1), s);
+    if (!s.at_end()) s.fail("expected the end of the section, found " + std::to_string(s.left()) + " more byte(s)");
+  }
+  if (trace) {
+    Reader tail(bytes, body_end, bytes.size(), trace);
+    tail.heading("trailer");
+    tail.u32("crc32");
+  }
+  verify_rmb_codes(d.g, d.code_at);
+  d.g.build_tables();
+  return std::move(d.g);
+}
+
+std::string format_rmb_trace(std::string_view bytes, const std::vector<rmb::TraceEntry>& trace) {
+  std::string out;
+  char buf[32];
+  for (const rmb::TraceEntry& e : trace) {
+    if (e.size == 0) {
+      out += "-- " + e.field + "\n";
+      continue;
+    }
+    std::snprintf(buf, sizeof buf, "%08zx  ", e.offset);
+    std::string hex = rmb::hex_bytes(bytes.substr(e.offset, e.size), 8);
+    hex.resize(std::max<std::size_t>(hex.size(), 26), ' ');
+    std::string field = e.field;
+    field.resize(std::max<std::size_t>(field.size(), 22), ' ');
+    out += buf + hex + "  " + field + "  " + e.value + "\n";
+  }
+  return out;
+}
+
+}  // namespace ramus

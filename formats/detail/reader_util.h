@@ -1,0 +1,124 @@
+// Helpers shared by the point-cloud readers: errors with positions, text lines and tokens,
+// numbers via std::from_chars (no iostreams per number), endian-aware loads from raw bytes, and
+// the CloudBuilder that collects points in double precision and recentres them at the end.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "core/point_cloud.h"
+#include "formats/point_cloud_io.h"
+
+namespace ramus::formats_detail {
+
+[[noreturn]] void fail_at_line(const std::string& file, std::size_t line, std::string message);
+[[noreturn]] void fail_at_byte(const std::string& file, std::size_t byte, std::string message);
+[[noreturn]] void fail(const std::string& file, std::string message);
+
+// `token` in single quotes for a message: at most 40 characters, non-printable bytes as \xNN.
+std::string quoted(std::string_view token);
+
+// Case-insensitive ASCII equality and lower-casing.
+bool iequals(std::string_view a, std::string_view b);
+std::string lowercase(std::string_view s);
+
+// Parses the whole of `token` as a number (a leading '+' is allowed; "nan" and "inf" parse).
+bool parse_double(std::string_view token, double& out);
+// Parses the whole of `token` as a non-negative integer that fits in 64 bits.
+bool parse_u64(std::string_view token, std::uint64_t& out);
+
+// Walks `text` line by line; lines exclude the '\n' and a trailing '\r'. Line numbers are 1-based.
+class LineCursor {
+ public:
+  explicit LineCursor(std::string_view text) : text_(text) {}
+  bool next(std::string_view& line);
+  std::size_t line_number() const { return line_; }  // of the line last returned
+  std::size_t offset() const { return pos_; }        // byte just after the line last returned
+
+ private:
+  std::string_view text_;
+  std::size_t pos_ = 0;
+  std::size_t line_ = 0;
+};
+
+// Splits `line` at runs of spaces/tabs and of any character in `extra_separators`.
+void split_tokens(std::string_view line, std::string_view extra_separators,
+                  std::vector<std::string_view>& tokens);
+
+std::string_view trim(std::string_view s);
+
+// Loads a value of type T from `p` (unaligned), stored little or big endian.
+template <typename T>
+T load(const char* p, bool big_endian) {
+  unsigned char b[sizeof(T)];
+  std::memcpy(b, p, sizeof(T));
+  if (big_endian) {
+    for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
+  }
+  T v;
+  std::memcpy(&v, b, sizeof(T));
+  return v;
+}
+template <typename T>
+T load_le(const char* p) {
+  return load<T>(p, false);
+}
+
+// double -> float that is defined for every input: out-of-range values saturate to +-infinity
+// (what IEEE hardware does, but C++ leaves undefined), NaN stays NaN.
+float to_float(double d);
+
+// Collects points in double precision and turns them into a recentred PointCloud.
+class CloudBuilder {
+ public:
+  CloudBuilder(std::string name, const ReadOptions& options);
+
+  void enable_normals() { has_normals_ = true; }
+  void enable_intensity() { has_intensity_ = true; }
+  void enable_classification() { has_classification_ = true; }
+  void set_scanner(const Vec3& origin) {
+    scanner_ = origin;
+    has_scanner_ = true;
+  }
+  // Reserves room for `n` points but never more than `cap` (so a lying header cannot make us
+  // allocate gigabytes before the data proves it exists).
+  void reserve(std::uint64_t n, std::uint64_t cap);
+
+  // Adds a point; channels that were not enabled are ignored. Returns false when the point was
+  // dropped for a non-finite coordinate; the caller then raises its positioned error if
+  // strict() (ReadOptions::skip_non_finite is false).
+  bool add(const Vec3& p, const Vec3& normal = {}, double intensity = 0, std::uint8_t cls = 0);
+  bool strict() const { return !options_.skip_non_finite; }
+  std::size_t count() const { return points_.size(); }
+
+  // Recentres and narrows; throws FormatError when no point was read.
+  PointCloud finish(ReadReport* report, Format format, std::string variant);
+
+ private:
+  std::string name_;
+  ReadOptions options_;
+  std::vector<Vec3> points_;
+  std::vector<Vec3f> normals_;
+  std::vector<float> intensity_;
+  std::vector<std::uint8_t> classification_;
+  bool has_normals_ = false, has_intensity_ = false, has_classification_ = false;
+  bool has_scanner_ = false;
+  Vec3 scanner_;
+  std::size_t skipped_ = 0;
+};
+
+// The readers, one per file (read_<format>.cpp).
+PointCloud read_ply(std::string_view bytes, const std::string& name, const ReadOptions& options,
+                    ReadReport* report);
+PointCloud read_xyz(std::string_view bytes, const std::string& name, const ReadOptions& options,
+                    ReadReport* report);
+PointCloud read_las(std::string_view bytes, const std::string& name, const ReadOptions& options,
+                    ReadReport* report);
+PointCloud read_pcd(std::string_view bytes, const std::string& name, const ReadOptions& options,
+                    ReadReport* report);
+
+}  // namespace ramus::formats_detail

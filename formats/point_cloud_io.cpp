@@ -1,0 +1,104 @@
+// Format dispatch: magic bytes first, then the file extension, then plain text as XYZ.
+#include "formats/point_cloud_io.h"
+
+#include <cerrno>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+
+#include "formats/detail/reader_util.h"
+
+namespace ramus {
+
+using namespace formats_detail;
+
+const char* format_name(Format f) {
+  switch (f) {
+    case Format::kPly:
+      return "ply";
+    case Format::kXyz:
+      return "xyz";
+    case Format::kLas:
+      return "las";
+    case Format::kPcd:
+      return "pcd";
+    case Format::kAuto:
+      break;
+  }
+  return "auto";
+}
+
+Format format_from_extension(std::string_view path) {
+  std::size_t slash = path.find_last_of("/\\");
+  std::string_view base = slash == std::string_view::npos ? path : path.substr(slash + 1);
+  std::size_t dot = base.rfind('.');
+  if (dot == std::string_view::npos) return Format::kAuto;
+  std::string ext = lowercase(base.substr(dot + 1));
+  if (ext == "ply") return Format::kPly;
+  if (ext == "xyz" || ext == "txt" || ext == "asc" || ext == "csv" || ext == "pts") {
+    return Format::kXyz;
+  }
+  if (ext == "las" || ext == "laz") return Format::kLas;
+  if (ext == "pcd") return Format::kPcd;
+  return Format::kAuto;
+}
+
+// A PCD header starts with optional '#' comment lines followed by VERSION or FIELDS.
+static bool looks_like_pcd(std::string_view bytes) {
+  LineCursor lines(bytes.substr(0, 4096));
+  std::string_view line;
+  while (lines.next(line)) {
+    line = trim(line);
+    if (line.empty() || line.front() == '#') continue;
+    return line.substr(0, 8) == "VERSION " || line.substr(0, 7) == "FIELDS ";
+  }
+  return false;
+}
+
+Format sniff_format(std::string_view bytes) {
+  if (bytes.substr(0, 4) == "ply\n" || bytes.substr(0, 5) == "ply\r\n") return Format::kPly;
+  if (bytes.substr(0, 4) == "LASF") return Format::kLas;
+  if (looks_like_pcd(bytes)) return Format::kPcd;
+  return Format::kAuto;
+}
+
+PointCloud read_point_cloud_bytes(std::string_view bytes, Format format, const std::string& name,
+                                  const ReadOptions& options, ReadReport* report) {
+  if (bytes.empty()) fail(name, "the file is empty");
+  if (format == Format::kAuto) format = sniff_format(bytes);
+  if (format == Format::kAuto) format = format_from_extension(name);
+  if (format == Format::kAuto) format = Format::kXyz;
+  switch (format) {
+    case Format::kPly:
+      return read_ply(bytes, name, options, report);
+    case Format::kLas:
+      return read_las(bytes, name, options, report);
+    case Format::kPcd:
+      return read_pcd(bytes, name, options, report);
+    case Format::kXyz:
+    case Format::kAuto:
+      break;
+  }
+  return read_xyz(bytes, name, options, report);
+}
+
+PointCloud read_point_cloud(const std::string& path, const ReadOptions& options,
+                            ReadReport* report) {
+  std::error_code ec;
+  if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a point-cloud file");
+  std::ifstream in(path, std::ios::binary);
+  if (!in) fail(path, std::string("cannot open the file (") + std::strerror(errno) + ")");
+  in.seekg(0, std::ios::end);
+  std::streamoff size = in.tellg();
+  if (size < 0) fail(path, "cannot determine the file's size");
+  in.seekg(0, std::ios::beg);
+  std::string bytes(std::size_t(size), '\0');
+  if (size > 0 && !in.read(bytes.data(), size)) fail(path, "cannot read the file");
+  // Magic bytes decide when present, so a PLY saved as .txt still reads; otherwise the
+  // extension, so a .las without its signature gets the LAS reader's precise complaint.
+  Format format = sniff_format(bytes);
+  if (format == Format::kAuto) format = format_from_extension(path);
+  return read_point_cloud_bytes(bytes, format, path, options, report);
+}
+
+}  // namespace ramus

@@ -1,0 +1,227 @@
+// LAS reader: ASPRS LAS 1.0-1.4, point data record formats 0-10, uncompressed.
+// Field offsets follow the public header block tables of the LAS 1.4 specification (R13): the
+// 1.0-1.2 header is 227 bytes, 1.3 adds the waveform start (235), 1.4 the EVLR fields and the
+// 64-bit point counts (375). Coordinates are X * scale + offset in double precision. The header's
+// bounding box is never used (writers leave it zeroed or stale): bounds come from the points.
+// Records may be longer than their format's minimum (extra bytes), which are skipped.
+// LAZ (point format byte with bit 7 or 6 set, or a "laszip encoded" VLR) is rejected clearly.
+#include <cmath>
+#include <cstdio>
+
+#include "formats/detail/reader_util.h"
+
+namespace ramus::formats_detail {
+namespace {
+
+// Minimum record size of point data record formats 0-10 (LAS 1.4 tables 7-21).
+constexpr std::size_t kRecordSize[] = {20, 28, 26, 34, 57, 63, 30, 36, 38, 59, 67};
+
+// Byte offsets of public header fields.
+enum : std::size_t {
+  kVersionMajor = 24,
+  kVersionMinor = 25,
+  kHeaderSize = 94,
+  kPointOffset = 96,
+  kVlrCount = 100,
+  kFormat = 104,
+  kRecordLength = 105,
+  kLegacyCount = 107,
+  kScale = 131,
+  kOffset = 155,
+  kCount64 = 247,
+};
+
+struct LasHeader {
+  unsigned major = 0, minor = 0;
+  std::size_t header_size = 0;
+  std::size_t point_offset = 0;
+  std::uint32_t vlr_count = 0;
+  unsigned format = 0;
+  std::size_t record_length = 0;
+  std::uint64_t count = 0;
+  double scale[3] = {1, 1, 1};
+  double offset[3] = {0, 0, 0};
+};
+
+[[noreturn]] void laz_error(const std::string& file, std::size_t byte, const std::string& why) {
+  fail_at_byte(file, byte,
+               "the file is LAZ-compressed (" + why +
+                   "); compressed LAS is not read yet: decompress it first, e.g. with "
+                   "'laszip -i in.laz -o out.las' or 'pdal translate in.laz out.las'");
+}
+
+std::size_t min_header_size(unsigned minor) { return minor >= 4 ? 375 : minor == 3 ? 235 : 227; }
+
+void parse_fixed_fields(std::string_view b, const std::string& file, LasHeader& h) {
+  const char* d = b.data();
+  h.major = std::uint8_t(d[kVersionMajor]);
+  h.minor = std::uint8_t(d[kVersionMinor]);
+  if (h.major != 1 || h.minor > 4) {
+    fail_at_byte(file, kVersionMajor,
+                 "unsupported LAS version " + std::to_string(h.major) + "." +
+                     std::to_string(h.minor) + " (expected 1.0 to 1.4)");
+  }
+  h.header_size = load_le<std::uint16_t>(d + kHeaderSize);
+  if (h.header_size < min_header_size(h.minor)) {
+    fail_at_byte(file, kHeaderSize,
+                 "header size " + std::to_string(h.header_size) + " is smaller than the " +
+                     std::to_string(min_header_size(h.minor)) + " bytes of a LAS 1." +
+                     std::to_string(h.minor) + " header");
+  }
+  if (h.header_size > b.size()) {
+    fail_at_byte(file, b.size(),
+                 "the header is cut off: it is " + std::to_string(h.header_size) +
+                     " bytes, the file ends first");
+  }
+  h.point_offset = load_le<std::uint32_t>(d + kPointOffset);
+  if (h.point_offset < h.header_size || h.point_offset > b.size()) {
+    fail_at_byte(file, kPointOffset,
+                 "offset to point data " + std::to_string(h.point_offset) +
+                     " is outside the file (header " + std::to_string(h.header_size) +
+                     " bytes, file " + std::to_string(b.size()) + " bytes)");
+  }
+  h.vlr_count = load_le<std::uint32_t>(d + kVlrCount);
+}
+
+void parse_point_fields(std::string_view b, const std::string& file, LasHeader& h) {
+  const char* d = b.data();
+  const unsigned format_byte = std::uint8_t(d[kFormat]);
+  if (format_byte & 0xc0) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02x", format_byte);
+    laz_error(file, kFormat, std::string("point format byte ") + hex + ": compression bit set");
+  }
+  h.format = format_byte;
+  if (h.format > 10) {
+    fail_at_byte(
+        file, kFormat,
+        "unknown point data record format " + std::to_string(h.format) + " (expected 0 to 10)");
+  }
+  h.record_length = load_le<std::uint16_t>(d + kRecordLength);
+  if (h.record_length < kRecordSize[h.format]) {
+    fail_at_byte(file, kRecordLength,
+                 "point data record length " + std::to_string(h.record_length) +
+                     " is smaller than the " + std::to_string(kRecordSize[h.format]) +
+                     " bytes of point format " + std::to_string(h.format));
+  }
+  h.count = load_le<std::uint32_t>(d + kLegacyCount);
+  if (h.minor >= 4) {
+    // LAS 1.4 keeps the 32-bit count only for old readers (0 for formats 6-10 or > 2^32 points).
+    std::uint64_t count64 = load_le<std::uint64_t>(d + kCount64);
+    if (count64 != 0) h.count = count64;
+  }
+  static const char* axis[] = {"x", "y", "z"};
+  for (int k = 0; k < 3; ++k) {
+    h.scale[k] = load_le<double>(d + kScale + 8 * k);
+    h.offset[k] = load_le<double>(d + kOffset + 8 * k);
+    if (!std::isfinite(h.scale[k]) || h.scale[k] == 0) {
+      fail_at_byte(
+          file, kScale + 8 * k,
+          std::string(axis[k]) + " scale factor is " + (h.scale[k] == 0 ? "zero" : "not finite"));
+    }
+    if (!std::isfinite(h.offset[k])) {
+      fail_at_byte(file, kOffset + 8 * k, std::string(axis[k]) + " offset is not finite");
+    }
+  }
+}
+
+// Walks the variable length records between the header and the point data: each must fit, and
+// a laszip VLR means the points are compressed even if the format byte does not say so.
+void check_vlrs(std::string_view b, const std::string& file, const LasHeader& h) {
+  constexpr std::size_t kVlrHeader = 54;
+  std::size_t pos = h.header_size;
+  for (std::uint32_t i = 0; i < h.vlr_count; ++i) {
+    if (h.point_offset - pos < kVlrHeader) {
+      fail_at_byte(file, pos,
+                   "variable length record " + std::to_string(i + 1) + " of " +
+                       std::to_string(h.vlr_count) + " runs past the start of point data at byte " +
+                       std::to_string(h.point_offset));
+    }
+    std::string_view user = b.substr(pos + 2, 16);
+    user = user.substr(0, user.find('\0'));
+    std::uint16_t record_id = load_le<std::uint16_t>(b.data() + pos + 18);
+    std::size_t length = load_le<std::uint16_t>(b.data() + pos + 20);
+    if (user == "laszip encoded" && record_id == 22204) {
+      laz_error(file, pos, "it has the 'laszip encoded' variable length record");
+    }
+    if (h.point_offset - pos - kVlrHeader < length) {
+      fail_at_byte(file, pos + 20,
+                   "variable length record " + std::to_string(i + 1) + " of " +
+                       std::to_string(h.vlr_count) + " (" + quoted(user) +
+                       ") runs past the start of point data at byte " +
+                       std::to_string(h.point_offset));
+    }
+    pos += kVlrHeader + length;
+  }
+}
+
+void read_points(std::string_view b, const std::string& file, const LasHeader& h,
+                 CloudBuilder& builder) {
+  const std::size_t available = b.size() - h.point_offset;
+  const std::size_t complete = available / h.record_length;
+  if (h.count > complete) {
+    fail_at_byte(file, h.point_offset + complete * h.record_length,
+                 "the header announces " + std::to_string(h.count) + " points of " +
+                     std::to_string(h.record_length) + " bytes but the file holds only " +
+                     std::to_string(complete) + " complete records");
+  }
+  builder.enable_intensity();
+  builder.enable_classification();
+  builder.reserve(h.count, complete);
+  const bool extended = h.format >= 6;
+  const char* rec = b.data() + h.point_offset;
+  for (std::uint64_t i = 0; i < h.count; ++i, rec += h.record_length) {
+    Vec3 p;
+    for (int k = 0; k < 3; ++k) {
+      p[k] = double(load_le<std::int32_t>(rec + 4 * k)) * h.scale[k] + h.offset[k];
+    }
+    double intensity = load_le<std::uint16_t>(rec + 12);
+    // Formats 0-5 keep the class in the low 5 bits of byte 15 (bits 5-7 are flags); formats
+    // 6-10 give it the whole byte 16.
+    std::uint8_t cls = extended ? std::uint8_t(rec[16]) : std::uint8_t(rec[15] & 0x1f);
+    if (!builder.add(p, {}, intensity, cls) && builder.strict()) {
+      fail_at_byte(file, std::size_t(rec - b.data()),
+                   "point " + std::to_string(i) + " has a non-finite coordinate");
+    }
+  }
+}
+
+}  // namespace
+
+PointCloud read_las(std::string_view bytes, const std::string& name, const ReadOptions& options,
+                    ReadReport* report) {
+  if (bytes.substr(0, 4) != "LASF") {
+    fail_at_byte(name, 0, "expected the LAS signature 'LASF', found " + quoted(bytes.substr(0, 4)));
+  }
+  if (bytes.size() < 227) {
+    fail_at_byte(name, bytes.size(),
+                 "the header is cut off: a LAS header has at least 227 "
+                 "bytes, the file ends after " +
+                     std::to_string(bytes.size()));
+  }
+  LasHeader h;
+  parse_fixed_fields(bytes, name, h);
+  parse_point_fields(bytes, name, h);
+  check_vlrs(bytes, name, h);
+  CloudBuilder builder(name, options);
+  read_points(bytes, name, h, builder);
+  std::string variant = "LAS " + std::to_string(h.major) + "." + std::to_string(h.minor) +
+                        ", point format " + std::to_string(h.format) + ", " +
+                        std::to_string(h.record_length) + "-byte records";
+  if (h.record_length > kRecordSize[h.format]) {
+    variant += " (" + std::to_string(h.record_length - kRecordSize[h.format]) + " extra bytes)";
+  }
+  PointCloud cloud = builder.finish(report, Format::kLas, variant);
+  // Every record has intensity and class fields; all zeros means the scanner recorded none.
+  auto all_zero = [](const auto& v) {
+    for (auto x : v) {
+      if (x != 0) return false;
+    }
+    return true;
+  };
+  if (all_zero(cloud.intensity)) cloud.intensity.clear();
+  if (all_zero(cloud.classification)) cloud.classification.clear();
+  return cloud;
+}
+
+}  // namespace ramus::formats_detail

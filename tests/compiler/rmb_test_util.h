@@ -1,0 +1,44 @@
+// Helpers for the .rmb tests: the example grammars, lowered as `ramus build` lowers them.
+#pragma once
+
+#include <algorithm>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "compiler/derive.h"
+#include "compiler/ir.h"
+#include "compiler/pipeline.h"
+#include "grammar/diagnostic.h"
+#include "grammar/source.h"
+
+namespace ramus::test {
+
+// Every .ramus under examples/, sorted, relative to the source tree.
+inline std::vector<std::string> example_grammars() {
+  namespace fs = std::filesystem;
+  std::vector<std::string> out;
+  const fs::path root = fs::path(RAMUS_SOURCE_DIR);
+  for (const auto& e : fs::recursive_directory_iterator(root / "examples")) {
+    if (e.path().extension() == ".ramus") out.push_back(fs::relative(e.path(), root).string());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+inline ir::Grammar lower_example(const std::string& relative) {
+  SourceManager sm;
+  DiagnosticSink diags;
+  return lower_file(std::string(RAMUS_SOURCE_DIR) + "/" + relative, GrowOptions{}, sm, diags);
+}
+
+inline ModuleString derive_steps(const ir::Grammar& g, int steps,
+                                 std::uint64_t max_modules = 100'000'000) {
+  DeriveOptions d;
+  d.steps = steps;
+  d.max_modules = max_modules;
+  d.threads = 1;
+  return derive(g, d);
+}
+
+}  // namespace ramus::test

@@ -1,0 +1,119 @@
+// A truncated or corrupted .rmb is rejected with an RmbError naming the byte offset, never a
+// crash: truncation at every length, each byte flipped at every offset, and -- behind a
+// checksum switched off -- structural damage the decoder must catch by itself.
+#include <catch2/catch.hpp>
+
+#include "compiler/expr_vm.h"
+#include "compiler/rmb_codec.h"
+#include "rmb_test_util.h"
+
+using namespace ramus;
+
+namespace {
+
+const char* kFiles[] = {"examples/abop/fig1_24a.ramus", "examples/abop/param_p42.ramus",
+                        "examples/trees/weeping.ramus"};
+
+// Decodes `bytes`; if accepted, derives a little with small limits. Returns true on RmbError.
+bool rejected_or_harmless(std::string_view bytes, const RmbDecodeOptions& o) {
+  ir::Grammar g;
+  try {
+    g = decode_rmb(bytes, o);
+  } catch (const RmbError& e) {
+    CHECK(e.offset <= bytes.size());
+    return true;
+  }
+  try {
+    test::derive_steps(g, std::min(g.settings.derive, 3), 20'000);
+  } catch (const DeriveError&) {
+  } catch (const ExprError&) {
+  }
+  return false;
+}
+
+}  // namespace
+
+TEST_CASE("rmb: truncation at every length is rejected", "[rmb]") {
+  for (const char* file : kFiles) {
+    INFO(file);
+    const std::string bytes = encode_rmb(test::lower_example(file));
+    for (std::size_t n = 0; n < bytes.size(); ++n) {
+      INFO("length " << n);
+      CHECK_THROWS_AS(decode_rmb(std::string_view(bytes).substr(0, n)), RmbError);
+    }
+  }
+}
+
+TEST_CASE("rmb: a flipped byte at every offset is rejected", "[rmb]") {
+  for (const char* file : kFiles) {
+    INFO(file);
+    const std::string good = encode_rmb(test::lower_example(file));
+    for (std::size_t i = 0; i < good.size(); ++i) {
+      for (unsigned char mask : {0x01, 0x80, 0xFF}) {
+        std::string bad = good;
+        bad[i] = char(bad[i] ^ mask);
+        INFO("offset " << i << " mask " << int(mask));
+        CHECK_THROWS_AS(decode_rmb(bad), RmbError);
+      }
+    }
+  }
+}
+
+TEST_CASE("rmb: structural damage behind a disabled checksum never crashes", "[rmb]") {
+  RmbDecodeOptions unchecked;
+  unchecked.verify_checksum = false;
+  std::size_t rejected = 0, total = 0;
+  for (const char* file : kFiles) {
+    INFO(file);
+    const std::string good = encode_rmb(test::lower_example(file));
+    REQUIRE_FALSE(rejected_or_harmless(good, unchecked));
+    for (std::size_t n = 0; n < good.size(); ++n) {
+      INFO("length " << n);
+      CHECK(rejected_or_harmless(std::string_view(good).substr(0, n), unchecked));
+    }
+    for (std::size_t i = 0; i + 4 < good.size(); ++i) {
+      for (unsigned char value : {0x00, 0x01, 0x7F, 0x80, 0xFF}) {
+        if (std::uint8_t(good[i]) == value) continue;
+        std::string bad = good;
+        bad[i] = char(value);
+        INFO("offset " << i << " value " << int(value));
+        rejected += rejected_or_harmless(bad, unchecked);
+        ++total;
+      }
+    }
+  }
+  // Damage inside doubles and strings is still a valid file; damage to ids, counts, ranges and
+  // varints -- a good part of every file -- must be caught without the CRC.
+  CHECK(rejected * 5 > total);
+}
+
+TEST_CASE("rmb: errors name the offset and what was expected", "[rmb]") {
+  const std::string good = encode_rmb(test::lower_example("examples/abop/fig1_24a.ramus"));
+  std::string bad = good;
+  bad[0] = 'X';
+  try {
+    decode_rmb(bad);
+    FAIL("accepted a bad magic");
+  } catch (const RmbError& e) {
+    CHECK(e.offset == 0);
+    CHECK(std::string(e.what()).find("magic") != std::string::npos);
+  }
+  bad = good;
+  bad[10] = char(bad[10] ^ 0x10);
+  try {
+    decode_rmb(bad);
+    FAIL("accepted a bad checksum");
+  } catch (const RmbError& e) {
+    CHECK(e.offset == good.size() - 4);
+    CHECK(std::string(e.what()).find("CRC-32") != std::string::npos);
+  }
+  try {
+    decode_rmb(std::string_view(good).substr(0, 20));
+    FAIL("accepted a truncated file");
+  } catch (const RmbError& e) {
+    CHECK(std::string(e.what()).find("byte ") == 0);
+  }
+  bad = good;
+  bad[4] = 2;  // version 2
+  CHECK_THROWS_WITH(decode_rmb(bad), Catch::Contains("expected format version 1"));
+}
