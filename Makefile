@@ -3,7 +3,7 @@
 #   make test   build in release, run the whole suite through ctest
 BUILD_DIR ?= build/release
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
-DEMO ?= examples/abop/fig2_6a_monopodial.ramus
+DEMO ?= examples/trees/broadleaf.ramus
 
 .PHONY: demo test deps build clean
 

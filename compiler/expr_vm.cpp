@@ -2,13 +2,12 @@
 
 #include <cmath>
 
+#include "grammar/builtin_math.h"
 #include "grammar/builtins.h"
 
 namespace ramus {
 
 namespace {
-
-constexpr double kDeg = kPi / 180.0;
 
 [[noreturn]] void fail(ir::CodeId c, const char* why) { throw ExprError(why, c); }
 
@@ -17,65 +16,45 @@ double checked(double v, ir::CodeId c, const char* why) {
   return v;
 }
 
-// Domain checks first, so the message names the cause rather than "not finite".
+// Domain checks first, so the message names the cause rather than "not finite"; the arithmetic
+// itself is the constant folder's (grammar/builtin_math.h).
 double call_math(Builtin b, const double* x, ir::CodeId c, LazyRng& rng) {
   switch (b) {
-    case Builtin::Sin:
-      return std::sin(x[0] * kDeg);
-    case Builtin::Cos:
-      return std::cos(x[0] * kDeg);
     case Builtin::Tan:
-      return checked(std::tan(x[0] * kDeg), c, "tan of an odd multiple of 90");
+      return checked(builtin_math(b, x), c, "tan of an odd multiple of 90");
     case Builtin::Asin:
       if (x[0] < -1 || x[0] > 1) fail(c, "asin of a value outside [-1, 1]");
-      return std::asin(x[0]) / kDeg;
+      break;
     case Builtin::Acos:
       if (x[0] < -1 || x[0] > 1) fail(c, "acos of a value outside [-1, 1]");
-      return std::acos(x[0]) / kDeg;
-    case Builtin::Atan:
-      return std::atan(x[0]) / kDeg;
-    case Builtin::Atan2:
-      return std::atan2(x[0], x[1]) / kDeg;
+      break;
     case Builtin::Sqrt:
       if (x[0] < 0) fail(c, "square root of a negative number");
-      return std::sqrt(x[0]);
+      break;
     case Builtin::Exp:
-      return checked(std::exp(x[0]), c, "exp overflows");
+      return checked(builtin_math(b, x), c, "exp overflows");
     case Builtin::Log:
     case Builtin::Log10:
       if (x[0] <= 0) fail(c, "logarithm of a number that is not positive");
-      return b == Builtin::Log ? std::log(x[0]) : std::log10(x[0]);
-    case Builtin::Pow:
       break;
-    case Builtin::Abs:
-      return std::fabs(x[0]);
-    case Builtin::Floor:
-      return std::floor(x[0]);
-    case Builtin::Ceil:
-      return std::ceil(x[0]);
-    case Builtin::Round:
-      return std::round(x[0]);
-    case Builtin::Min:
-      return std::fmin(x[0], x[1]);
-    case Builtin::Max:
-      return std::fmax(x[0], x[1]);
+    case Builtin::Pow:
+      if (x[0] < 0 && x[1] != std::floor(x[1])) {
+        fail(c, "power of a negative number with a fractional exponent");
+      }
+      if (x[0] == 0 && x[1] < 0) fail(c, "zero to a negative power");
+      return checked(builtin_math(b, x), c, "power overflows");
     case Builtin::Clamp:
       if (x[1] > x[2]) fail(c, "clamp with lower bound above upper bound");
-      return std::fmin(std::fmax(x[0], x[1]), x[2]);
-    case Builtin::Sign:
-      return x[0] > 0 ? 1.0 : (x[0] < 0 ? -1.0 : 0.0);
+      break;
     case Builtin::Uniform:
       return rng.get().uniform(x[0], x[1]);
     case Builtin::Normal:
       if (x[1] < 0) fail(c, "normal with a negative standard deviation");
       return rng.get().normal(x[0], x[1]);
+    default:
+      break;
   }
-  // pow
-  if (x[0] < 0 && x[1] != std::floor(x[1])) {
-    fail(c, "power of a negative number with a fractional exponent");
-  }
-  if (x[0] == 0 && x[1] < 0) fail(c, "zero to a negative power");
-  return checked(std::pow(x[0], x[1]), c, "power overflows");
+  return builtin_math(b, x);
 }
 
 double modulo(double a, double b, ir::CodeId c) {

@@ -115,14 +115,12 @@ class Lowerer {
   }
 
   const ast::LSystem& find_system() const {
-    const ast::LSystem* first = nullptr;
     for (std::size_t f = 0; f < prog_.files.size(); ++f) {
       for (const ast::Decl& d : prog_.files[f].decls) {
         const auto* ls = std::get_if<ast::LSystem>(&d);
         if (!ls) continue;
         if (opt_.system.empty()) return *ls;  // files[0] is the root: its first block
         if (ls->name.name == opt_.system) return *ls;
-        if (!first) first = ls;
       }
       if (opt_.system.empty() && f == 0) break;
     }

@@ -15,13 +15,14 @@ using rmb::Reader;
 
 constexpr std::size_t kMaxFile = std::size_t(64) << 20;
 constexpr std::size_t kMaxString = std::size_t(1) << 20;
+constexpr std::size_t kMaxLocation = 4096;
 constexpr std::size_t kHeader = 8, kTrailer = 4;
 constexpr std::size_t kSectionCount = 9;  // Meta .. Ignored, all required in version 1
 
 struct Decoder {
   std::string_view bytes;
   std::vector<rmb::TraceEntry>* trace;
-  ir::Grammar g;
+  ir::Grammar g;                     // starts with the 16 turtle symbols
   std::vector<std::size_t> code_at;  // byte offset of each code record, for error messages
 
   Reader section(std::size_t b, std::size_t e) { return Reader(bytes, b, e, trace); }
@@ -49,22 +50,20 @@ struct Decoder {
     s.max_depth = int(depth);
   }
 
-  std::int16_t arity(Reader& r) {
+  std::int16_t arity(Reader& r, const char* field = "arity") {
     const std::size_t at = r.pos();
-    const std::int64_t a = r.svarint("arity");
+    const std::int64_t a = r.svarint(field);
     if (a < -1 || a > 32767) r.fail_at(at, "expected an arity in -1..32767");
     return std::int16_t(a);
   }
 
   void symbols(Reader& r) {
     const std::size_t extra = r.count("extra symbols", 65536 - ir::kTurtleSymbolCount, 2);
-    g = [&] {
-      ir::Grammar fresh = ir::make_grammar(g.name);
-      fresh.selection = g.selection;
-      fresh.settings = g.settings;
-      return fresh;
-    }();
-    for (int i = 0; i < ir::kTurtleSymbolCount; ++i) g.symbols[i].arity = arity(r);
+    static const char* kFields[ir::kTurtleSymbolCount] = {
+        "arity of F",  "arity of f", "arity of +", "arity of -", "arity of &", "arity of ^",
+        "arity of \\", "arity of /", "arity of |", "arity of $", "arity of [", "arity of ]",
+        "arity of !",  "arity of '", "arity of ~", "arity of %"};
+    for (int i = 0; i < ir::kTurtleSymbolCount; ++i) g.symbols[i].arity = arity(r, kFields[i]);
     std::set<std::string> seen(std::begin(ir::kTurtleNames), std::end(ir::kTurtleNames));
     for (std::size_t i = 0; i < extra; ++i) {
       r.heading("symbol " + std::to_string(ir::kTurtleSymbolCount + i));
@@ -95,9 +94,16 @@ struct Decoder {
   }
 
   void locations(Reader& r) {
-    const std::size_t n = r.count("locations", kMaxFile);
+    const std::size_t n = r.count("locations", kMaxFile, 2);
     g.locations.reserve(n);
-    for (std::size_t i = 0; i < n; ++i) g.locations.push_back(r.str("location", kMaxString));
+    for (std::size_t i = 0; i < n; ++i) {  // front-coded: a prefix of the previous, then a suffix
+      const std::size_t keep = r.bounded("shared prefix", i == 0 ? 0 : g.locations.back().size());
+      std::string s = i == 0 ? std::string() : g.locations.back().substr(0, keep);
+      s += r.str("suffix", kMaxLocation);
+      // Front coding could otherwise grow every entry by a byte: quadratic memory from a file.
+      if (s.size() > kMaxLocation) r.fail("expected a location of at most 4096 bytes");
+      g.locations.push_back(std::move(s));
+    }
   }
 
   void bytecode(Reader& r) {
@@ -165,9 +171,7 @@ struct Decoder {
     const std::uint64_t v = r.bounded(field, g.codes.size());
     return v == 0 ? ir::kNoCode : ir::CodeId(v - 1);
   }
-  ir::SymbolId symbol(Reader& r) {
-    return ir::SymbolId(r.bounded("symbol", g.symbols.size() - 1));
-  }
+  ir::SymbolId symbol(Reader& r) { return ir::SymbolId(r.bounded("symbol", g.symbols.size() - 1)); }
 
   ir::Pattern pattern(Reader& r) {
     ir::Pattern p;
@@ -249,33 +253,46 @@ struct Decoder {
 
   void run_section(RmbSection id, Reader& r) {
     switch (id) {
-      case RmbSection::Meta: return meta(r);
-      case RmbSection::Symbols: return symbols(r);
-      case RmbSection::Constants: return constants(r);
-      case RmbSection::Locations: return locations(r);
-      case RmbSection::Bytecode: return bytecode(r);
-      case RmbSection::Codes: return codes(r);
-      case RmbSection::Productions: return productions(r);
-      case RmbSection::Axiom: return axiom(r);
-      case RmbSection::Ignored: return ignored(r);
-      default: r.fail("expected a known section");
+      case RmbSection::Meta:
+        return meta(r);
+      case RmbSection::Symbols:
+        return symbols(r);
+      case RmbSection::Constants:
+        return constants(r);
+      case RmbSection::Locations:
+        return locations(r);
+      case RmbSection::Bytecode:
+        return bytecode(r);
+      case RmbSection::Codes:
+        return codes(r);
+      case RmbSection::Productions:
+        return productions(r);
+      case RmbSection::Axiom:
+        return axiom(r);
+      case RmbSection::Ignored:
+        return ignored(r);
+      default:
+        r.fail("expected a known section");
     }
   }
 };
 
 const char* section_name(std::size_t id) {
-  static const char* kNames[] = {"?",     "meta",        "symbols", "constants", "locations",
-                                 "bytecode", "codes", "productions", "axiom",   "ignored"};
+  static const char* kNames[] = {"?",        "meta",  "symbols",     "constants", "locations",
+                                 "bytecode", "codes", "productions", "axiom",     "ignored"};
   return id < std::size(kNames) ? kNames[id] : "reserved";
 }
 
 void check_header(Reader& r, std::string_view bytes, const RmbDecodeOptions& options) {
   if (bytes.size() > kMaxFile) r.fail("expected a file of at most 64 MiB");
-  if (r.raw("magic", 4) != std::string_view("RMB\x1a", 4)) r.fail_at(0, "expected magic \"RMB\\x1a\"");
+  if (r.raw("magic", 4) != std::string_view("RMB\x1a", 4))
+    r.fail_at(0, "expected magic \"RMB\\x1a\"");
   const std::uint16_t version = r.u16("version");
-  if (version != kRmbVersion) r.fail_at(4, "expected format version 1, found " + std::to_string(version));
+  if (version != kRmbVersion)
+    r.fail_at(4, "expected format version 1, found " + std::to_string(version));
   const std::uint16_t flags = r.u16("flags");
-  if (flags != 0) r.fail_at(6, "expected flags 0 (quantization and compression are not defined in version 1)");
+  if (flags != 0)
+    r.fail_at(6, "expected flags 0 (quantization and compression are not defined in version 1)");
   if (bytes.size() < kHeader + kTrailer) r.fail_at(bytes.size(), "expected at least 12 bytes");
   Reader tail(bytes, bytes.size() - kTrailer, bytes.size(), nullptr);
   const std::uint32_t stored = tail.u32("crc32");
@@ -290,7 +307,7 @@ void check_header(Reader& r, std::string_view bytes, const RmbDecodeOptions& opt
 
 ir::Grammar decode_rmb(std::string_view bytes, const RmbDecodeOptions& options,
                        std::vector<rmb::TraceEntry>* trace) {
-  Decoder d{bytes, trace, {}, {}};
+  Decoder d{bytes, trace, ir::make_grammar(""), {}};  // the turtle symbols are implied
   const std::size_t body_end = bytes.size() >= kTrailer ? bytes.size() - kTrailer : 0;
   Reader r(bytes, 0, body_end, trace);
   r.heading("header");
@@ -302,21 +319,27 @@ ir::Grammar decode_rmb(std::string_view bytes, const RmbDecodeOptions& options,
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t at = r.pos();
     const std::uint64_t id = r.varint("section id");
-    if (id != i + 1) r.fail_at(at, "expected section id " + std::to_string(i + 1) + " (" + section_name(i + 1) + "), found " + std::to_string(id));
+    if (id != i + 1)
+      r.fail_at(at, "expected section id " + std::to_string(i + 1) + " (" + section_name(i + 1) +
+                        "), found " + std::to_string(id));
     const std::uint64_t off = r.varint("offset");
     const std::uint64_t len = r.bounded("length", body_end);
-    if (i > 0 && off != expect_at) r.fail_at(at, "expected section offset " + std::to_string(expect_at));
+    if (i > 0 && off != expect_at)
+      r.fail_at(at, "expected section offset " + std::to_string(expect_at));
     if (off > body_end || len > body_end - off) r.fail_at(at, "expected a section inside the file");
     ranges.emplace_back(std::size_t(off), std::size_t(off + len));
     expect_at = std::size_t(off + len);
   }
   if (ranges.front().first != r.pos()) r.fail("expected the first section right after the table");
-  if (expect_at != body_end) r.fail_at(expect_at, "expected the CRC-32 right after the last section");
+  if (expect_at != body_end)
+    r.fail_at(expect_at, "expected the CRC-32 right after the last section");
   for (std::size_t i = 0; i < n; ++i) {
     Reader s = d.section(ranges[i].first, ranges[i].second);
     s.heading(std::string("section ") + std::to_string(i + 1) + ": " + section_name(i + 1));
     d.run_section(RmbSection(i + 1), s);
-    if (!s.at_end()) s.fail("expected the end of the section, found " + std::to_string(s.left()) + " more byte(s)");
+    if (!s.at_end())
+      s.fail("expected the end of the section, found " + std::to_string(s.left()) +
+             " more byte(s)");
   }
   if (trace) {
     Reader tail(bytes, body_end, bytes.size(), trace);

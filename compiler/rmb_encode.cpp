@@ -48,9 +48,17 @@ void write_constants(Writer& w, const ir::Grammar& g) {
   }
 }
 
+// Front coding: each location shares most of its "file:line:" with the one before.
 void write_locations(Writer& w, const ir::Grammar& g) {
   w.varint(g.locations.size());
-  for (const std::string& s : g.locations) w.str(s);
+  std::string_view prev;
+  for (const std::string& s : g.locations) {
+    std::size_t common = 0;
+    while (common < prev.size() && common < s.size() && prev[common] == s[common]) ++common;
+    w.varint(common);
+    w.str(std::string_view(s).substr(common));
+    prev = s;
+  }
 }
 
 void write_bytecode(Writer& w, const ir::Grammar& g) {

@@ -51,7 +51,8 @@ std::string check_code(const ir::Grammar& g, const ir::Code& c) {
     const ir::Instr& in = g.code[c.begin + i];
     const std::string where = "instruction " + std::to_string(c.begin + i) + ": ";
     if (depth[i] < 0) continue;  // unreachable: never executed
-    if (in.op == ir::Op::Const && in.a >= g.consts.size()) return where + "constant index out of range";
+    if (in.op == ir::Op::Const && in.a >= g.consts.size())
+      return where + "constant index out of range";
     if (in.op == ir::Op::Load && in.a >= ir::kMaxSlots) return where + "slot out of range";
     if (in.op == ir::Op::Call && in.a >= std::size(kBuiltins)) return where + "unknown builtin";
     const Effect e = effect(in);
@@ -89,8 +90,8 @@ void verify_rmb_codes(const ir::Grammar& g, const std::vector<std::size_t>& code
   for (std::size_t c = 0; c < g.codes.size(); ++c) {
     const std::string problem = check_code(g, g.codes[c]);
     if (!problem.empty()) {
-      throw rmb::RmbError(code_at[c], "expected a valid expression for code " + std::to_string(c) +
-                                          ": " + problem);
+      throw rmb::RmbError(
+          code_at[c], "expected a valid expression for code " + std::to_string(c) + ": " + problem);
     }
   }
   for (const ir::SuccModule& m : g.axiom) {

@@ -118,11 +118,15 @@ PointCloud XyzReader::read(ReadReport* report) {
     if (line.empty()) continue;
     bool comment = line.front() == '#' || line.substr(0, 2) == "//";
     if (comment) {
-      // A comment before any data that names x, y and z is a header (CloudCompare, our writer).
+      // A comment before any data that starts with the names x, y, z is a header (CloudCompare's
+      // "//X,Y,Z,...", our writer's "# x y z ..."); prose that merely mentions x, y and z is not.
       if (!seen_first_line_ && !cols_.from_header) {
         std::string_view body = line.substr(line.front() == '#' ? 1 : 2);
         split_tokens(body, ",;", tokens_);
-        columns_from_names(tokens_, cols_, name_, lines_.line_number());
+        if (tokens_.size() >= 3 && strip_name(tokens_[0]) == "x" && strip_name(tokens_[1]) == "y" &&
+            strip_name(tokens_[2]) == "z") {
+          columns_from_names(tokens_, cols_, name_, lines_.line_number());
+        }
       }
       continue;
     }

@@ -3,10 +3,10 @@
 #include <cmath>
 #include <vector>
 
+#include "grammar/builtin_math.h"
+
 namespace ramus {
 namespace {
-
-constexpr double kDegree = kPi / 180.0;
 
 // Evaluates recursively; the parser bounds expression depth (E0004), so recursion is safe.
 class Folder {
@@ -126,54 +126,7 @@ class Folder {
 
 }  // namespace
 
-double apply_builtin(Builtin fn, std::span<const double> a) {
-  switch (fn) {
-    case Builtin::Sin:
-      return std::sin(a[0] * kDegree);
-    case Builtin::Cos:
-      return std::cos(a[0] * kDegree);
-    case Builtin::Tan:
-      return std::tan(a[0] * kDegree);
-    case Builtin::Asin:
-      return std::asin(a[0]) / kDegree;
-    case Builtin::Acos:
-      return std::acos(a[0]) / kDegree;
-    case Builtin::Atan:
-      return std::atan(a[0]) / kDegree;
-    case Builtin::Atan2:
-      return std::atan2(a[0], a[1]) / kDegree;
-    case Builtin::Sqrt:
-      return std::sqrt(a[0]);
-    case Builtin::Exp:
-      return std::exp(a[0]);
-    case Builtin::Log:
-      return std::log(a[0]);
-    case Builtin::Log10:
-      return std::log10(a[0]);
-    case Builtin::Pow:
-      return std::pow(a[0], a[1]);
-    case Builtin::Abs:
-      return std::fabs(a[0]);
-    case Builtin::Floor:
-      return std::floor(a[0]);
-    case Builtin::Ceil:
-      return std::ceil(a[0]);
-    case Builtin::Round:
-      return std::round(a[0]);
-    case Builtin::Min:
-      return std::fmin(a[0], a[1]);
-    case Builtin::Max:
-      return std::fmax(a[0], a[1]);
-    case Builtin::Clamp:
-      return std::fmin(std::fmax(a[0], a[1]), a[2]);
-    case Builtin::Sign:
-      return a[0] > 0 ? 1.0 : (a[0] < 0 ? -1.0 : 0.0);
-    case Builtin::Uniform:
-    case Builtin::Normal:
-      return std::nan("");
-  }
-  return std::nan("");
-}
+double apply_builtin(Builtin fn, std::span<const double> a) { return builtin_math(fn, a.data()); }
 
 FoldResult evaluate_constant(const ast::Expr& expr, const ConstLookup& lookup) {
   Folder f(lookup);

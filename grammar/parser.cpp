@@ -222,7 +222,8 @@ ast::File parse(SourceManager& sm, std::uint32_t file_id, DiagnosticSink& diags)
   }
   if (scan.too_deep) {
     diags.report(DiagCode::NestingTooDeep, driver.span_at(*scan.too_deep, 1),
-                 "brackets nested deeper than " + std::to_string(detail::kMaxNesting) + " levels");
+                 "brackets and braces nested deeper than " + std::to_string(detail::kMaxNesting) +
+                     " levels");
     ast::File f;
     f.file_id = file_id;
     f.comments = std::move(scan.comments);

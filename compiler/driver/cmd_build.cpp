@@ -10,6 +10,7 @@
 #include "backends/mesh/gltf_writer.h"
 #include "backends/mesh/openmesh_writer.h"
 #include "backends/mesh/tree_mesh.h"
+#include "compiler/driver/build_binary.h"
 #include "compiler/driver/grow_args.h"
 
 namespace ramus::cli {
@@ -35,6 +36,8 @@ void print_warnings(const mesh::MeshReport& report) {
 }
 
 int run_build(const BuildArgs& a, const GlobalOptions& global) {
+  if (a.target == "binary") return build_binary(a.grow, a.output, global.quiet);
+  if (extension(a.output) == ".rmb") throw UserError("an .rmb output needs --target binary");
   const std::optional<Skeleton> skeleton = grow_for_cli(a.grow);
   if (!skeleton) return 1;
   mesh::MeshOptions o;
@@ -76,19 +79,19 @@ void add_build(CLI::App& app, const GlobalOptions& global, std::function<int()>&
   auto args = std::make_shared<BuildArgs>();
   CLI::App* sub = app.add_subcommand("build", "compile a grammar into an asset (a tree mesh)");
   add_grow_options(sub, args->grow);
-  sub->add_option("-o,--output", args->output, "output: .glb, .gltf (+ .bin), .obj (+ .mtl), .ply")
+  sub->add_option("-o,--output", args->output, "output: .glb, .gltf (+ .bin), .obj (+ .mtl), .ply; .rmb with --target binary")
       ->required()
       ->check(CLI::Validator(
           [](const std::string& p) -> std::string {
             const std::string e = extension(p);
-            return e == ".glb" || e == ".gltf" || e == ".obj" || e == ".ply"
+            return e == ".glb" || e == ".gltf" || e == ".obj" || e == ".ply" || e == ".rmb"
                        ? ""
-                       : "the output must end in .glb, .gltf, .obj or .ply";
+                       : "the output must end in .glb, .gltf, .obj, .ply or .rmb";
           },
           "FILE", "mesh file"));
   // The targets later back ends add (pieces, binary, voxels) join this list.
   sub->add_option("--target", args->target, "what to build (default: mesh)")
-      ->check(CLI::IsMember({"mesh"}));
+      ->check(CLI::IsMember({"mesh", "binary"}));
   sub->add_option("--lod", args->lod, "levels of detail: glTF gets LOD0..LOD N, OBJ/PLY level N")
       ->check(CLI::Range(0, 7));
   sub->add_option("--pipe-exponent", args->pipe_exponent,

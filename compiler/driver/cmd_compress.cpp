@@ -10,11 +10,9 @@
 
 #include "compiler/driver/command.h"
 #include "compiler/driver/scan_args.h"
-#include "compiler/infer/wavelet/alignment.h"
 #include "compiler/infer/wavelet/compression.h"
 #include "compiler/infer/wavelet/haar.h"
 #include "compiler/infer/wavelet/voxelize.h"
-#include "formats/point_cloud_io.h"
 
 namespace ramus::cli {
 
@@ -34,7 +32,6 @@ struct CompressArgs {
 int run_compress(const CompressArgs& a, const GlobalOptions& global) {
   using namespace wavelet;
   VoxelizeOptions vo;
-  AlignOptions ao;
   Decomposition decomposition;
   CoefficientScale scale;
   try {
@@ -46,18 +43,8 @@ int run_compress(const CompressArgs& a, const GlobalOptions& global) {
   } catch (const std::invalid_argument& e) {
     throw UserError(std::string("--grid: ") + e.what());
   }
-  if (!a.scanner.empty()) ao.scanner = parse_scanner(a.scanner);
-  PointCloud cloud;
-  try {
-    cloud = read_point_cloud(a.scan);
-  } catch (const FormatError& e) {
-    throw UserError(e.what());
-  }
-  AlignedCloud aligned = align_cloud(cloud, ao);
-  if (!aligned.alignment.warning.empty() && !global.quiet) {
-    std::fprintf(stderr, "ramus compress: warning: %s\n", aligned.alignment.warning.c_str());
-  }
-  VoxelGrid grid = voxelize(aligned, vo);
+  const AlignedScan scan = read_aligned_scan(a.scan, a.scanner, "compress", global.quiet);
+  VoxelGrid grid = voxelize(scan.aligned, vo);
   WaveletPyramid pyramid = haar_forward(grid, decomposition);
   CompressionStats s = compression_stats(grid, pyramid, a.gamma, scale);
   if (!a.no_header) {
@@ -67,8 +54,8 @@ int run_compress(const CompressArgs& a, const GlobalOptions& global) {
     std::printf("|---|---:|---:|---:|---:|---:|---:|\n");
   }
   std::printf("| %s | %zu | %d^3 | %zu | %.1f | %.1f | %.3f |\n", file_name(a.scan).c_str(),
-              cloud.size(), a.grid, s.input_voxels, 100 * s.lossless_ratio, 100 * s.lossy_ratio,
-              s.lossy_iou);
+              scan.cloud.size(), a.grid, s.input_voxels, 100 * s.lossless_ratio,
+              100 * s.lossy_ratio, s.lossy_iou);
   return 0;
 }
 

@@ -13,9 +13,7 @@
 
 #include "compiler/derive.h"
 #include "compiler/driver/command.h"
-#include "compiler/driver/defines.h"
-#include "compiler/grow.h"
-#include "compiler/pipeline.h"
+#include "compiler/driver/grow_args.h"
 #include "compiler/turtle.h"
 #include "core/atomic_file.h"
 #include "formats/skeleton_json.h"
@@ -25,12 +23,7 @@ namespace ramus::cli {
 namespace {
 
 struct DeriveArgs {
-  std::string file;
-  std::optional<int> steps;
-  std::optional<std::uint64_t> seed;
-  std::vector<std::string> defines;
-  std::string system;
-  std::uint64_t max_modules = 100'000'000;
+  GrowArgs grow;
   int threads = 0;
   bool print = false, stats = false;
   std::string skeleton;
@@ -70,28 +63,12 @@ void print_stats(const ir::Grammar& g, const ModuleString& s, const DeriveStats&
 }
 
 int run_derive(const DeriveArgs& a) {
-  GrowOptions opt;
-  opt.system = a.system;
-  opt.steps = a.steps;
-  opt.seed = a.seed;
-  opt.defines = parse_defines(a.defines);
-  opt.max_modules = a.max_modules;
-  SourceManager sources;
-  DiagnosticSink diags;
-  ir::Grammar g;
-  try {
-    g = lower_file(a.file, opt, sources, diags);
-  } catch (const GrowError& e) {
-    diags.sort();
-    std::string text = render_text(sources, diags.all());
-    std::fputs(text.c_str(), stderr);
-    if (!diags.has_errors()) throw UserError(e.what());
-    return 1;
-  }
-  if (!diags.all().empty()) std::fputs(render_text(sources, diags.all()).c_str(), stderr);
+  const std::optional<ir::Grammar> lowered = lower_for_cli(a.grow);
+  if (!lowered) return 1;
+  const ir::Grammar& g = *lowered;
   DeriveOptions d;
-  d.steps = a.steps;
-  d.max_modules = a.max_modules;
+  d.steps = a.grow.steps;
+  d.max_modules = a.grow.max_modules;
   d.threads = a.threads;
   DeriveStats st;
   try {
@@ -102,7 +79,7 @@ int run_derive(const DeriveArgs& a) {
       TurtleOptions t;
       t.seed = g.settings.seed;
       t.steps = st.steps;
-      t.max_modules = a.max_modules;
+      t.max_modules = a.grow.max_modules;
       t.threads = a.threads;
       write_skeleton_json(a.skeleton, interpret(g, s, t));
     } else {
@@ -121,13 +98,7 @@ int run_derive(const DeriveArgs& a) {
 void add_derive(CLI::App& app, const GlobalOptions&, std::function<int()>& run) {
   auto args = std::make_shared<DeriveArgs>();
   CLI::App* sub = app.add_subcommand("derive", "derive an lsystem: print its string or counts");
-  sub->add_option("file", args->file, "grammar file (.ramus)")->required();
-  sub->add_option("-n,--steps", args->steps, "derivation steps (default: the grammar's derive)")
-      ->check(CLI::NonNegativeNumber);
-  sub->add_option("--seed", args->seed, "random seed (default: the grammar's seed)");
-  sub->add_option("-D,--define", args->defines, "override a param: name=value");
-  sub->add_option("--system", args->system, "lsystem block (default: the first)");
-  sub->add_option("--max-modules", args->max_modules, "stop with an error above this length");
+  add_grow_options(sub, args->grow);
   sub->add_option("--threads", args->threads, "threads (default: all cores)")
       ->check(CLI::NonNegativeNumber);
   auto* p = sub->add_flag("--print", args->print, "print the string in ABOP notation (default)");

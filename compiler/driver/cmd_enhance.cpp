@@ -54,22 +54,12 @@ int run_enhance(const EnhanceArgs& a, const GlobalOptions& global) {
     if (vo.levels < 2 || vo.levels >= kMaxLevels) throw std::invalid_argument("");
     (void)make_quantizer(1.0, a.classes);
   } catch (const std::invalid_argument& e) {
-    throw UserError("--grid must be a power of two from 4 to 512 and --classes odd in [3, 255]");
+    throw UserError("--grid must be a power of two from 4 to 256 and --classes odd in [3, 255]");
   }
   so.seed = a.seed;
   so.classes = a.classes;
-  AlignOptions ao;
-  if (!a.scanner.empty()) ao.scanner = parse_scanner(a.scanner);
-  PointCloud cloud;
-  try {
-    cloud = read_point_cloud(a.scan);
-  } catch (const FormatError& e) {
-    throw UserError(e.what());
-  }
-  AlignedCloud aligned = align_cloud(cloud, ao);
-  if (!aligned.alignment.warning.empty() && !global.quiet) {
-    std::fprintf(stderr, "ramus enhance: warning: %s\n", aligned.alignment.warning.c_str());
-  }
+  const AlignedScan scan = read_aligned_scan(a.scan, a.scanner, "enhance", global.quiet);
+  const AlignedCloud& aligned = scan.aligned;
   VoxelGrid grid = voxelize(aligned, vo);
   SuperResolution sr = super_resolve(grid, so);
   PointCloud out = voxel_centres(sr.grid, 0.5, &aligned.alignment);
@@ -81,8 +71,8 @@ int run_enhance(const EnhanceArgs& a, const GlobalOptions& global) {
   }
   std::printf(
       "%s: %zu points -> %zu^3 grid (%zu voxels) -> %zu^3 enhanced (%zu voxels, %zu rules)\n",
-      file_name(a.scan).c_str(), cloud.size(), grid.n, grid.count_above(0), sr.grid.n, out.size(),
-      sr.grammar.rules.size());
+      file_name(a.scan).c_str(), scan.cloud.size(), grid.n, grid.count_above(0), sr.grid.n,
+      out.size(), sr.grammar.rules.size());
   VoxelizeOptions fine = vo;
   fine.levels = vo.levels + 1;
   print_comparison(compare_resolutions(grid, sr.grid, voxelize(aligned, fine)), sr.grid.n);

@@ -3,9 +3,40 @@
 #include <cstdio>
 
 #include "compiler/driver/defines.h"
-#include "compiler/grow.h"
+#include "compiler/pipeline.h"
 
 namespace ramus::cli {
+
+namespace {
+
+void print_diagnostics(const SourceManager& sources, DiagnosticSink& diags) {
+  if (diags.all().empty()) return;
+  diags.sort();
+  std::fputs(render_text(sources, diags.all()).c_str(), stderr);
+}
+
+// Runs one front-end step (lower_file or grow_file) with the CLI's handling of diagnostics:
+// warnings are printed and the result returned; errors in the grammar are printed and give
+// nullopt; a GrowError without a diagnostic (no such lsystem, ...) becomes a UserError.
+template <class Result>
+std::optional<Result> run_reporting(const GrowArgs& a,
+                                    Result (*step)(const std::string&, const GrowOptions&,
+                                                   SourceManager&, DiagnosticSink&)) {
+  const GrowOptions opt = to_grow_options(a);
+  SourceManager sources;
+  DiagnosticSink diags;
+  try {
+    Result r = step(a.file, opt, sources, diags);
+    print_diagnostics(sources, diags);
+    return r;
+  } catch (const GrowError& e) {
+    print_diagnostics(sources, diags);
+    if (!diags.has_errors()) throw UserError(e.what());
+    return std::nullopt;
+  }
+}
+
+}  // namespace
 
 void add_grow_options(CLI::App* sub, GrowArgs& a) {
   sub->add_option("file", a.file, "grammar file (.ramus)")->required();
@@ -17,28 +48,22 @@ void add_grow_options(CLI::App* sub, GrowArgs& a) {
   sub->add_option("--max-modules", a.max_modules, "stop with an error above this length");
 }
 
-std::optional<Skeleton> grow_for_cli(const GrowArgs& a) {
+GrowOptions to_grow_options(const GrowArgs& a) {
   GrowOptions opt;
   opt.system = a.system;
   opt.steps = a.steps;
   opt.seed = a.seed;
   opt.defines = parse_defines(a.defines);
   opt.max_modules = a.max_modules;
-  SourceManager sources;
-  DiagnosticSink diags;
-  try {
-    Skeleton s = grow_file(a.file, opt, sources, diags);
-    if (!diags.all().empty()) {
-      diags.sort();
-      std::fputs(render_text(sources, diags.all()).c_str(), stderr);
-    }
-    return s;
-  } catch (const GrowError& e) {
-    diags.sort();
-    std::fputs(render_text(sources, diags.all()).c_str(), stderr);
-    if (!diags.has_errors()) throw UserError(e.what());
-    return std::nullopt;
-  }
+  return opt;
+}
+
+std::optional<ir::Grammar> lower_for_cli(const GrowArgs& a) {
+  return run_reporting<ir::Grammar>(a, &lower_file);
+}
+
+std::optional<Skeleton> grow_for_cli(const GrowArgs& a) {
+  return run_reporting<Skeleton>(a, &grow_file);
 }
 
 }  // namespace ramus::cli

@@ -1,4 +1,4 @@
-// The options every subcommand that grows a grammar into a tree shares (build, preview):
+// The options every subcommand that reads a grammar shares (build, derive, preview, scan):
 // FILE [-n N] [--seed S] [-D name=value]... [--system NAME] [--max-modules N].
 #pragma once
 
@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "compiler/driver/command.h"
+#include "compiler/grow.h"
+#include "compiler/ir.h"
 #include "core/skeleton.h"
 
 namespace ramus::cli {
@@ -22,6 +24,12 @@ struct GrowArgs {
 };
 
 void add_grow_options(CLI::App* sub, GrowArgs& args);
+
+// The options as the pipeline takes them (-D parsed; throws UserError on a malformed one).
+GrowOptions to_grow_options(const GrowArgs& args);
+
+// Loads, checks and lowers the grammar. Diagnostics are handled as by grow_for_cli.
+std::optional<ir::Grammar> lower_for_cli(const GrowArgs& args);
 
 // Grows the grammar. On errors in the grammar prints the diagnostics to stderr and returns
 // nullopt (the caller exits with 1); warnings are printed and growing goes on. Derivation

@@ -1,8 +1,10 @@
 #include "compiler/driver/scan_args.h"
 
+#include <cstdio>
 #include <sstream>
 
 #include "compiler/driver/command.h"
+#include "formats/point_cloud_io.h"
 
 namespace ramus::cli {
 
@@ -15,6 +17,24 @@ Vec3 parse_scanner(const std::string& text) {
     throw UserError("--scanner expects three numbers x,y,z, not '" + text + "'");
   }
   return v;
+}
+
+AlignedScan read_aligned_scan(const std::string& path, const std::string& scanner,
+                              const char* command, bool quiet) {
+  wavelet::AlignOptions ao;
+  if (!scanner.empty()) ao.scanner = parse_scanner(scanner);
+  AlignedScan scan;
+  try {
+    scan.cloud = read_point_cloud(path);
+  } catch (const FormatError& e) {
+    throw UserError(e.what());
+  }
+  scan.aligned = wavelet::align_cloud(scan.cloud, ao);
+  if (!scan.aligned.alignment.warning.empty() && !quiet) {
+    std::fprintf(stderr, "ramus %s: warning: %s\n", command,
+                 scan.aligned.alignment.warning.c_str());
+  }
+  return scan;
 }
 
 std::string file_name(const std::string& path) {

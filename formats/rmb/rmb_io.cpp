@@ -129,7 +129,8 @@ std::uint64_t Reader::varint(const char* field) {
     const std::uint8_t b = std::uint8_t(data_[pos_++]);
     // The tenth byte may carry only the top bit of a 64-bit value; a longer or overlong
     // encoding would let two byte strings mean one value.
-    if (shift == 63 && b > 1) fail_at(at, std::string("expected ") + field + ": varint overflows 64 bits");
+    if (shift == 63 && b > 1)
+      fail_at(at, std::string("expected ") + field + ": varint overflows 64 bits");
     v |= std::uint64_t(b & 0x7F) << shift;
     if (!(b & 0x80)) {
       if (b == 0 && shift > 0) fail_at(at, std::string("expected ") + field + ": overlong varint");
@@ -160,7 +161,9 @@ double Reader::f64(const char* field) {
 std::string Reader::str(const char* field, std::size_t max_len) {
   const std::size_t at = pos_;
   const std::uint64_t n = varint(field);
-  if (n > max_len) fail_at(at, std::string("expected ") + field + " of at most " + std::to_string(max_len) + " bytes, found length " + std::to_string(n));
+  if (n > max_len)
+    fail_at(at, std::string("expected ") + field + " of at most " + std::to_string(max_len) +
+                    " bytes, found length " + std::to_string(n));
   need(std::size_t(n), field);
   std::string s(data_.substr(pos_, std::size_t(n)));
   pos_ += std::size_t(n);

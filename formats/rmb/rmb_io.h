@@ -29,7 +29,9 @@ std::uint32_t crc32(std::string_view bytes);
 inline std::uint64_t zigzag(std::int64_t v) {
   return (std::uint64_t(v) << 1) ^ std::uint64_t(v >> 63);
 }
-inline std::int64_t unzigzag(std::uint64_t u) { return std::int64_t(u >> 1) ^ -std::int64_t(u & 1); }
+inline std::int64_t unzigzag(std::uint64_t u) {
+  return std::int64_t(u >> 1) ^ -std::int64_t(u & 1);
+}
 
 class Writer {
  public:
@@ -38,7 +40,7 @@ class Writer {
   void u32(std::uint32_t v);  // little-endian
   void varint(std::uint64_t v);
   void svarint(std::int64_t v) { varint(zigzag(v)); }
-  void f64(double v);  // the 8 bytes of the IEEE 754 value, little-endian
+  void f64(double v);            // the 8 bytes of the IEEE 754 value, little-endian
   void str(std::string_view s);  // varint length, then the bytes
   void bytes(std::string_view s) { out_.append(s); }
   std::size_t size() const { return out_.size(); }

@@ -102,8 +102,9 @@ ScanResult prescan(std::string_view t, std::uint32_t file) {
     p += n;
   }
   if (t.size() >= 3 && t.substr(0, 3) == "\xEF\xBB\xBF") r.start = 3;
-  // Braces nest across declarations; ( and [ never outlive a `;` or a brace, so their depth
-  // restarts there (an unbalanced `[` in one production does not count against the next).
+  // Braces nest across declarations; `[` never outlives a `;` or a brace, so its depth restarts
+  // there (an unbalanced `[` in one production does not count against the next). Parentheses
+  // are left to the parser, whose expression depth guard reports them and recovers.
   int braces = 0, inner = 0;
   for (std::size_t p = r.start; p < t.size();) {
     char c = t[p];
@@ -127,9 +128,9 @@ ScanResult prescan(std::string_view t, std::uint32_t file) {
       inner = 0;
     } else if (c == ';') {
       inner = 0;
-    } else if (c == '(' || c == '[') {
+    } else if (c == '[') {
       ++inner;
-    } else if (c == ')' || c == ']') {
+    } else if (c == ']') {
       inner = inner > 0 ? inner - 1 : 0;
     }
     if (braces + inner > kMaxNesting && !r.too_deep) r.too_deep = p;

@@ -8,8 +8,6 @@
 // the invariant length = (5 #F - 3) / 2 of the stochastic fig. 1.27 (and its seeding), the
 // lattice path of the 3D Hilbert curve (fig. 1.10), and a clean `ramus check` of every example
 // and stdlib file.
-#include <sys/wait.h>
-
 #include <algorithm>
 #include <array>
 #include <catch2/catch.hpp>
@@ -26,42 +24,16 @@
 #include <tuple>
 #include <vector>
 
+#include "cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
-  int status = -1;
-  std::string output;  // stdout and stderr together
-};
+using Run = cli_test::CliResult;
 
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) {
-    if (c == '\'') {
-      q += "'\\''";
-    } else {
-      q += c;
-    }
-  }
-  return q + "'";
-}
-
-// Runs `ramus ARGS` and returns its exit status and output.
-Run ramus(const std::vector<std::string>& args) {
-  std::string cmd = quoted(RAMUS_EXE);
-  for (const std::string& a : args) cmd += " " + quoted(a);
-  cmd += " 2>&1";
-  Run run;
-  FILE* pipe = popen(cmd.c_str(), "r");
-  if (!pipe) return run;
-  std::array<char, 4096> buf{};
-  std::size_t n = 0;
-  while ((n = std::fread(buf.data(), 1, buf.size(), pipe)) > 0) run.output.append(buf.data(), n);
-  int raw = pclose(pipe);
-  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return run;
-}
+// Runs `ramus ARGS` and returns its exit status and output (stdout and stderr together).
+Run ramus(const std::vector<std::string>& args) { return cli_test::run_ramus(args); }
 
 std::string source_path(const std::string& rel) {
   return std::string(RAMUS_SOURCE_DIR) + "/" + rel;
@@ -143,9 +115,9 @@ int check_rows(const std::string& part) {
     std::vector<std::string> args = {"derive", source_path(file), "--stats"};
     if (!first) args.insert(args.end(), {"-n", row[1]});
     Run run = ramus(args);
-    INFO("ramus derive " << file << (first ? "" : " -n " + row[1]) << " --stats\n" << run.output);
+    INFO("ramus derive " << file << (first ? "" : " -n " + row[1]) << " --stats\n" << run.out);
     REQUIRE(run.status == 0);
-    Stats s = parse_stats(run.output);
+    Stats s = parse_stats(run.out);
     REQUIRE(s.has_length);
     CHECK(s.length == std::stoll(row[2]));
     CHECK(count_of(s, "F") == std::stoll(row[3]));
@@ -207,9 +179,9 @@ TEST_CASE("abop: whole words of short derivations including p. 42", "[abop]") {
   for (const auto& row : read_tsv("tests/expected/abop_strings.tsv")) {
     REQUIRE(row.size() == 3);
     Run run = ramus({"derive", source_path(row[0]), "-n", row[1], "--print"});
-    INFO("ramus derive " << row[0] << " -n " << row[1] << " --print\n" << run.output);
+    INFO("ramus derive " << row[0] << " -n " << row[1] << " --print\n" << run.out);
     REQUIRE(run.status == 0);
-    CHECK(without_space(run.output) == row[2]);
+    CHECK(without_space(run.out) == row[2]);
     ++checked;
   }
   CHECK(checked > 0);
@@ -220,9 +192,9 @@ TEST_CASE("abop: fig 1.27 stochastic length invariant for several seeds", "[abop
   for (const char* seed : {"1", "2", "3", "17", "12345"}) {
     for (const char* steps : {"1", "3", "5", "6"}) {
       Run run = ramus({"derive", file, "--stats", "--seed", seed, "-n", steps});
-      INFO("seed " << seed << " steps " << steps << "\n" << run.output);
+      INFO("seed " << seed << " steps " << steps << "\n" << run.out);
       REQUIRE(run.status == 0);
-      Stats s = parse_stats(run.output);
+      Stats s = parse_stats(run.out);
       REQUIRE(s.has_length);
       long long f = count_of(s, "F");
       CHECK(2 * s.length == 5 * f - 3);
@@ -237,9 +209,9 @@ TEST_CASE("abop: fig 1.27 same seed same word and different seeds different word
   const std::string file = source_path("examples/abop/fig1_27.ramus");
   auto word = [&](const char* seed) {
     Run run = ramus({"derive", file, "--print", "--seed", seed});
-    INFO(run.output);
+    INFO(run.out);
     REQUIRE(run.status == 0);
-    return without_space(run.output);
+    return without_space(run.out);
   };
   const std::string a = word("1");
   CHECK(a.size() > 100);
@@ -249,7 +221,7 @@ TEST_CASE("abop: fig 1.27 same seed same word and different seeds different word
   // without --seed the file's own `seed 1` is used
   Run run = ramus({"derive", file, "--print"});
   REQUIRE(run.status == 0);
-  CHECK(without_space(run.output) == a);
+  CHECK(without_space(run.out) == a);
 }
 
 namespace {
@@ -288,7 +260,7 @@ TEST_CASE("abop: 3D Hilbert curve path visits every lattice point of its box onc
   for (int n = 1; n <= 3; ++n) {
     const std::string out = (dir / ("hilbert" + std::to_string(n) + ".json")).string();
     Run run = ramus({"derive", file, "-n", std::to_string(n), "--skeleton", out});
-    INFO("n = " << n << "\n" << run.output);
+    INFO("n = " << n << "\n" << run.out);
     REQUIRE(run.status == 0);
     std::ifstream in(out);
     REQUIRE(in.good());
@@ -320,9 +292,9 @@ TEST_CASE("abop: ramus check reports no errors on every example and stdlib file"
     for (const auto& entry : fs::recursive_directory_iterator(source_path(folder))) {
       if (entry.path().extension() != ".ramus") continue;
       Run run = ramus({"check", entry.path().string()});
-      INFO("ramus check " << entry.path().string() << "\n" << run.output);
+      INFO("ramus check " << entry.path().string() << "\n" << run.out);
       CHECK(run.status == 0);
-      CHECK(run.output.find("error") == std::string::npos);
+      CHECK(run.out.find("error") == std::string::npos);
       ++files;
     }
   }

@@ -12,36 +12,22 @@
 #include <string>
 #include <vector>
 
+#include "cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
-  int status = -1;
-  std::string output;  // stdout and stderr together
-};
+using cli_test::slurp;
+using Run = cli_test::CliResult;
 
-Run run(const std::string& args) {
-  Run r;
-  const std::string cmd = std::string("\"") + RAMUS_EXE + "\" " + args + " 2>&1";
-  FILE* pipe = popen(cmd.c_str(), "r");
-  REQUIRE(pipe);
-  std::array<char, 512> buf;
-  while (fgets(buf.data(), int(buf.size()), pipe)) r.output += buf.data();
-  const int st = pclose(pipe);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
+// stdout and stderr together.
+Run run(const std::string& args) { return cli_test::run_ramus_shell(args); }
 
 fs::path scratch() {
   const fs::path dir = fs::path(RAMUS_BINARY_DIR) / "test-output" / "build-cli";
   fs::create_directories(dir);
   return dir;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  return {std::istreambuf_iterator<char>(in), {}};
 }
 
 std::string example(const char* rel) { return std::string(RAMUS_SOURCE_DIR) + "/examples/" + rel; }
@@ -57,9 +43,8 @@ TEST_CASE("ramus build turns every example into a valid glb", "[cli][build]") {
       const fs::path out = scratch() / (entry.path().stem().string() + ".glb");
       const Run r = run("--quiet build \"" + entry.path().string() + "\" -o \"" + out.string() +
                         "\" --lod 1");
-      if (r.status != 0 && r.output.find("no geometry") != std::string::npos)
-        continue;  // not a plant
-      INFO(entry.path() << "\n" << r.output);
+      if (r.status != 0 && r.out.find("no geometry") != std::string::npos) continue;  // not a plant
+      INFO(entry.path() << "\n" << r.out);
       REQUIRE(r.status == 0);
       files += " \"" + out.string() + "\"";
       ++built;
@@ -110,16 +95,16 @@ TEST_CASE("ramus build and preview reject bad invocations clearly", "[cli][build
   CHECK(r.status == 2);
   r = run("build \"" + src + "\" -o x.fbx");
   CHECK(r.status == 2);
-  CHECK(r.output.find(".glb") != std::string::npos);
+  CHECK(r.out.find(".glb") != std::string::npos);
   r = run("build \"" + src + "\" -o /nonexistent-ramus-dir/x.glb");
   CHECK(r.status == 1);
-  CHECK(r.output.find("/nonexistent-ramus-dir/x.glb") != std::string::npos);
+  CHECK(r.out.find("/nonexistent-ramus-dir/x.glb") != std::string::npos);
   CHECK_FALSE(fs::exists("/nonexistent-ramus-dir/x.glb"));
   r = run("build /nonexistent-ramus-dir/g.ramus -o x.glb");
   CHECK(r.status == 1);
   r = run("preview \"" + src + "\" -o x.png --size 12by9");
   CHECK(r.status == 1);
-  CHECK(r.output.find("--size") != std::string::npos);
+  CHECK(r.out.find("--size") != std::string::npos);
   r = run("preview \"" + src + "\" -o x.jpg");
   CHECK(r.status == 2);
 }

@@ -1,62 +1,20 @@
 // `ramus check`: exit codes, text and JSON diagnostics, -D, on temporary files.
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
+
+#include "cli_runner.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-// A temporary directory for one test case, removed at the end.
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "ramus_check_XXXXXX").string();
-    path = mkdtemp(tmpl.data());
-  }
-  ~TempDir() { fs::remove_all(path); }
-  fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name, std::ios::binary) << text;
-    return path / name;
-  }
-};
+using cli_test::TempDir;
+using Result = cli_test::CliResult;
 
 Result ramus(const TempDir& dir, const std::vector<std::string>& args) {
-  std::string cmd = quote(RAMUS_EXE);
-  for (const std::string& a : args) cmd += " " + quote(a);
-  fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt";
-  cmd += " >" + quote(out.string()) + " 2>" + quote(err.string());
-  int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
+  return cli_test::run_ramus_split(dir.path, args);
 }
 
 const char* kClean = "lsystem s {\n  derive 2;\n  axiom F;\n  F -> F[+F]F;\n}\n";
@@ -71,7 +29,7 @@ TEST_CASE("check cli: a clean file exits 0 and prints nothing", "[cli][check]") 
   CHECK(r.out.empty());
 }
 
-TEST_CASE("check cli: errors exit 1 with file:line:col, caret and notes", "[cli][check]") {
+TEST_CASE("check cli: errors exit 1 with file:line:col and caret and notes", "[cli][check]") {
   TempDir dir;
   fs::path f =
       dir.write("bad.ramus", "const a = 1;\nconst a = 2;\nlsystem s {\n  axiom A(a, b);\n}\n");
@@ -107,7 +65,7 @@ TEST_CASE("check cli: --diagnostics=json prints one document on stdout", "[cli][
   CHECK(clean.out.find("{\"diagnostics\":[]") == 0);
 }
 
-TEST_CASE("check cli: several files, each with its own mistakes", "[cli][check]") {
+TEST_CASE("check cli: several files each with its own mistakes", "[cli][check]") {
   TempDir dir;
   fs::path a = dir.write("a.ramus", "lsystem s { axiom S_1; }\n");
   fs::path b = dir.write("b.ramus", kClean);
@@ -137,7 +95,7 @@ TEST_CASE("check cli: -D overrides a param and must name one", "[cli][check]") {
   CHECK(ramus(dir, {"check", f.string(), "-D", "n=abc"}).status == 2);
 }
 
-TEST_CASE("check cli: usage errors exit 2, unreadable files 1", "[cli][check]") {
+TEST_CASE("check cli: usage errors exit 2 and unreadable files 1", "[cli][check]") {
   TempDir dir;
   CHECK(ramus(dir, {"check"}).status == 2);
   CHECK(ramus(dir, {"check", "--diagnostics=xml", dir.write("ok.ramus", kClean).string()}).status ==

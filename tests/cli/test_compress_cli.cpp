@@ -1,30 +1,16 @@
 // `ramus compress`: a Table I row for a scan, and clear errors for bad input.
-#include <sys/wait.h>
-
 #include <catch2/catch.hpp>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "cli_runner.h"
+
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string out;
-};
+using Result = cli_test::CliResult;
 
-Result run(const std::string& args) {
-  std::string cmd = std::string(RAMUS_EXE) + " " + args + " 2>&1";
-  Result r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (p == nullptr) return r;
-  char buf[4096];
-  while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) r.out.append(buf, n);
-  int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
+Result run(const std::string& args) { return cli_test::run_ramus_shell(args); }
 
 }  // namespace
 
@@ -56,6 +42,7 @@ TEST_CASE("compress cli: bad grids and scanners and files are errors", "[cli][wa
   CHECK(run("compress " + one + " --grid 48").status == 1);
   CHECK(run("compress " + one + " --grid 48").out.find("not a power of two") != std::string::npos);
   CHECK(run("compress " + one + " --scanner 1,x,3").status == 1);
+  CHECK(run("compress " + one + " --grid 1024").status == 1);  // larger than the 512^3 limit
   CHECK(run("compress " + dir + "/missing.xyz").status == 1);
   CHECK(run("compress " + one + " --values counts").status == 2);
 }

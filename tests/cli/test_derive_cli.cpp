@@ -1,42 +1,23 @@
 // `ramus derive`: the --print and --stats contracts, --skeleton, -D, and errors with exit code 1.
-#include <sys/wait.h>
-
-#include <array>
 #include <catch2/catch.hpp>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
+#include "cli_runner.h"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string out;
-};
+using Result = cli_test::CliResult;
 
-Result ramus_derive(const std::string& args) {
-  const std::string cmd = std::string("'") + RAMUS_EXE + "' derive " + args + " 2>&1";
-  Result r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (!p) return r;
-  std::array<char, 4096> buf{};
-  std::size_t n = 0;
-  while ((n = std::fread(buf.data(), 1, buf.size(), p)) > 0) r.out.append(buf.data(), n);
-  const int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
+Result ramus_derive(const std::string& args) { return cli_test::run_ramus_shell("derive " + args); }
 
 std::string write_temp(const std::string& name, const std::string& text) {
-  const fs::path dir = fs::temp_directory_path() / "ramus_test_derive_cli";
-  fs::create_directories(dir);
-  const fs::path p = dir / name;
-  std::ofstream(p) << text;
-  return p.string();
+  return cli_test::write_text(fs::temp_directory_path() / "ramus_test_derive_cli" / name, text)
+      .string();
 }
 
 }  // namespace

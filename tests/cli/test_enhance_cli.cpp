@@ -1,42 +1,22 @@
 // `ramus enhance`: super-resolution of a scan written as voxel centres, reproducible by seed.
-#include <sys/wait.h>
-
 #include <catch2/catch.hpp>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
+
+#include "cli_runner.h"
 
 namespace {
 
-struct Result {
-  int status = -1;
-  std::string out;
-};
+using cli_test::slurp;
+using Result = cli_test::CliResult;
 
-Result run(const std::string& args) {
-  std::string cmd = std::string(RAMUS_EXE) + " " + args + " 2>&1";
-  Result r;
-  FILE* p = popen(cmd.c_str(), "r");
-  if (p == nullptr) return r;
-  char buf[4096];
-  while (std::size_t n = std::fread(buf, 1, sizeof buf, p)) r.out.append(buf, n);
-  int st = pclose(p);
-  r.status = WIFEXITED(st) ? WEXITSTATUS(st) : -1;
-  return r;
-}
-
-std::string slurp(const std::string& path) {
-  std::ifstream f(path, std::ios::binary);
-  std::stringstream s;
-  s << f.rdbuf();
-  return s.str();
-}
+Result run(const std::string& args) { return cli_test::run_ramus_shell(args); }
 
 }  // namespace
 
-TEST_CASE("enhance cli: writes the enhanced voxel centres and the same seed gives the same file", "[cli][wavelet]") {
+TEST_CASE("enhance cli: writes the enhanced voxel centres and the same seed gives the same file",
+          "[cli][wavelet]") {
   std::string scan = std::string(RAMUS_SHARED_DIR) + "/data/rtwig_cloud.txt";
   if (!std::filesystem::exists(scan)) {
     WARN("skipped: " << scan << " is missing");

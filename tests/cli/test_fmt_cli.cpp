@@ -1,61 +1,21 @@
 // `ramus fmt`: rewriting in place, --check, and files with errors left untouched.
-#include <sys/wait.h>
-#include <unistd.h>
-
 #include <catch2/catch.hpp>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
+
+#include "cli_runner.h"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string out, err;
-};
-
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-struct TempDir {
-  fs::path path;
-  TempDir() {
-    std::string tmpl = (fs::temp_directory_path() / "ramus_fmt_XXXXXX").string();
-    path = mkdtemp(tmpl.data());
-  }
-  ~TempDir() { fs::remove_all(path); }
-  fs::path write(const std::string& name, const std::string& text) const {
-    std::ofstream(path / name, std::ios::binary) << text;
-    return path / name;
-  }
-};
+using cli_test::slurp;
+using cli_test::TempDir;
+using Result = cli_test::CliResult;
 
 Result ramus(const TempDir& dir, const std::vector<std::string>& args) {
-  std::string cmd = quote(RAMUS_EXE);
-  for (const std::string& a : args) cmd += " " + quote(a);
-  fs::path out = dir.path / "stdout.txt", err = dir.path / "stderr.txt";
-  cmd += " >" + quote(out.string()) + " 2>" + quote(err.string());
-  int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  r.out = slurp(out);
-  r.err = slurp(err);
-  return r;
+  return cli_test::run_ramus_split(dir.path, args);
 }
 
 const char* kMessy = "lsystem s{axiom F;F->F[+F]F; // keep me\n}\n";
@@ -63,7 +23,7 @@ const char* kTidy = "lsystem s {\n  axiom F;\n  F -> F[+F]F;  // keep me\n}\n";
 
 }  // namespace
 
-TEST_CASE("fmt cli: rewrites a file in place, then leaves it alone", "[cli][fmt]") {
+TEST_CASE("fmt cli: rewrites a file in place and then leaves it alone", "[cli][fmt]") {
   TempDir dir;
   fs::path f = dir.write("a.ramus", kMessy);
   Result r = ramus(dir, {"fmt", f.string()});

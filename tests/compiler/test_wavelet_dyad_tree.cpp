@@ -8,7 +8,8 @@
 using namespace ramus;
 using namespace ramus::wavelet;
 
-TEST_CASE("dyad tree: nodes and root and Da Vinci areas and the skeleton on a fractal", "[wavelet]") {
+TEST_CASE("dyad tree: nodes and root and Da Vinci areas and the skeleton on a fractal",
+          "[wavelet]") {
   VoxelGrid g = test::sierpinski(5);
   g.voxel_size = 0.1;
   WaveletPyramid p = haar_forward(g, Decomposition::standard);

@@ -19,7 +19,8 @@ std::string scan_path(const char* name) { return std::string(RAMUS_SHARED_DIR) +
 
 }  // namespace
 
-TEST_CASE("real scans: compression figures and lossy reconstruction and dyad skeletons", "[wavelet]") {
+TEST_CASE("real scans: compression figures and lossy reconstruction and dyad skeletons",
+          "[wavelet]") {
   for (const char* name : {"adtree_tree1.xyz", "pytlidar_tree_1.las", "rtwig_cloud.txt"}) {
     std::string path = scan_path(name);
     if (!std::filesystem::exists(path)) {

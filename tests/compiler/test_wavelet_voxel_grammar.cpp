@@ -1,8 +1,7 @@
 // Voxel grammar (III-C) and super-resolution (III-D): compiler/infer/wavelet/voxel_grammar.h,
 // super_resolution.h.
-#include <catch2/catch.hpp>
-
 #include <bit>
+#include <catch2/catch.hpp>
 
 #include "compiler/infer/wavelet/super_resolution.h"
 #include "compiler/infer/wavelet/voxel_grammar.h"

@@ -61,6 +61,10 @@ TEST_CASE("xyz: CSV with a header names the columns", "[xyz]") {
   CHECK(e.normals[0] == Vec3f{1, 0, 0});
   CHECK(e.intensity[0] == 0.5f);
 
+  // Prose comments that mention x, y and z are not headers.
+  PointCloud g = xyz("# exported x and y and z by some tool\n# x y\n1 2 3 4\n");
+  CHECK(g.world(0) == Vec3{1, 2, 3});
+
   // A header of other names keeps x y z in the first three columns.
   PointCloud f = xyz("a b c d\n1 2 3 4\n");
   CHECK(f.world(0) == Vec3{1, 2, 3});

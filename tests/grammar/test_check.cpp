@@ -127,7 +127,7 @@ TEST_CASE("check: booleans and numbers do not mix", "[check]") {
   CHECK(codes_of("const big = true;\nlsystem s { axiom A(1); A(x) : big -> B; }") == "");
 }
 
-TEST_CASE("check: probabilities in (0, 1] summing to 1", "[check]") {
+TEST_CASE("check: probabilities between 0 and 1 that sum to 1", "[check]") {
   CHECK(codes_of("lsystem s { axiom F; F -> (0.5) F | (0.6) FF; }") == "E0207@1:27");
   CHECK(codes_of("lsystem s { axiom F; F -> (1.5) F | (-0.5) FF; }") == "E0206@1:28 E0206@1:38");
   // 0.1 + 0.2 + 0.7 is not exactly 1 in doubles: the tolerance is 1e-9.

@@ -28,7 +28,7 @@ std::optional<double> fold(const std::string& text) {
 
 }  // namespace
 
-TEST_CASE("const_eval: arithmetic, precedence and associativity", "[const_eval]") {
+TEST_CASE("const_eval: arithmetic with precedence and associativity", "[const_eval]") {
   CHECK(*fold("1 + 2 * 3") == 7);
   CHECK(*fold("(1 + 2) * 3") == 9);
   CHECK(*fold("2 ^ 3 ^ 2") == 512);  // right associative

@@ -95,7 +95,7 @@ TEST_CASE("format: names stay as written and modules are split only where names 
         "lsystem s {\n  axiom F F FF A B(1)C[+F]/ /(2);\n}\n");
 }
 
-TEST_CASE("format: parentheses where written or needed, none added otherwise", "[format]") {
+TEST_CASE("format: parentheses where written or needed and none added otherwise", "[format]") {
   CHECK(fmt("const a = (1 + 2) * 3, b = 1 + (2 * 3), c = 2 ^ -1, d = -(2 ^ 2);") ==
         "const a = (1 + 2) * 3, b = 1 + (2 * 3), c = 2 ^ -1, d = -(2 ^ 2);\n");
   CHECK(fmt("const a = 1?2:3, b = (1 ? 2 : 3) + 1;") ==
@@ -200,7 +200,7 @@ TEST_CASE("format: round trip over the golden formatter inputs", "[format]") {
   CHECK(files > 0);
 }
 
-TEST_CASE("format: long successors break between modules, before a branch", "[format]") {
+TEST_CASE("format: long successors break between modules before a branch", "[format]") {
   std::string succ;
   for (int i = 0; i < 8; ++i) succ += "F(length * 0.5)[+(angle)G(length)]";
   std::string out = fmt("lsystem s { axiom F; F -> " + succ + "; }");

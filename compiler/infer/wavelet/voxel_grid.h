@@ -16,8 +16,9 @@
 
 namespace ramus::wavelet {
 
-// The largest grid this code accepts: 2^10 = 1024 per side is already 8 GiB of doubles.
-inline constexpr int kMaxLevels = 10;
+// The largest grid this code accepts: 2^9 = 512 per side is 1 GiB of doubles per grid, and the
+// transform and the compression figures hold a few grids at once.
+inline constexpr int kMaxLevels = 9;
 
 constexpr bool is_power_of_two(std::uint64_t n) { return n != 0 && (n & (n - 1)) == 0; }
 
