@@ -1,6 +1,7 @@
 # The two commands of the quick start. Both install what they need first.
 #   make demo   build in release, run the main job on a bundled example
 #   make test   build in release, run the whole suite through ctest
+MAKEFLAGS += --no-print-directory
 BUILD_DIR ?= build/release
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 DEMO ?= examples/trees/broadleaf.ramus

@@ -1,19 +1,15 @@
 #include "compiler/ir.h"
 
-#include <charconv>
 #include <stdexcept>
 
+#include "core/number_text.h"
 #include "grammar/builtins.h"
 
 namespace ramus::ir {
 
 namespace {
 
-std::string num(double v) {
-  char buf[64];
-  auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
+std::string num(double v) { return shortest_text(v); }
 
 const char* op_name(Op op) {
   switch (op) {

@@ -3,6 +3,8 @@
 #include <cctype>
 #include <charconv>
 
+#include "core/number_text.h"
+
 namespace ramus {
 
 namespace {
@@ -14,7 +16,6 @@ bool is_word(const std::string& name) {
 std::string to_text(const ir::Grammar& g, const ModuleString& s) {
   std::string out;
   out.reserve(s.size() * 2);
-  char buf[64];
   const std::string* prev = nullptr;  // name of the previous module when it had no parameters
   for (std::size_t i = 0; i < s.size(); ++i) {
     const std::string& name = g.symbols[s.symbol(i)].name;
@@ -30,8 +31,7 @@ std::string to_text(const ir::Grammar& g, const ModuleString& s) {
     out += '(';
     for (std::uint32_t k = 0; k < n; ++k) {
       if (k) out += ',';
-      auto r = std::to_chars(buf, buf + sizeof buf, s.param(i, k));
-      out.append(buf, r.ptr);
+      append_shortest(out, s.param(i, k));
     }
     out += ')';
   }

@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/atomic_file.h"
+#include "core/number_text.h"
 #include "formats/point_cloud_io.h"
 
 namespace ramus {
@@ -26,9 +27,7 @@ void put_le(std::string& out, T v) {
 // Shortest decimal that reads back to the same value.
 template <typename T>
 void put_text(std::string& out, T v) {
-  char buf[64];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, ec == std::errc() ? end : buf);
+  append_shortest(out, v);
 }
 
 bool has_offset(const PointCloud& c) { return c.offset != Vec3{0, 0, 0}; }

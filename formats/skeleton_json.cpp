@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/atomic_file.h"
+#include "core/number_text.h"
 #include "formats/detail/json.h"
 #include "formats/detail/reader_util.h"
 
@@ -21,9 +22,7 @@ constexpr int kVersion = 1;
 void put_number(std::string& out, double v) {
   // JSON has no NaN or infinity; a skeleton holding one is a bug upstream, not a file to write.
   if (!std::isfinite(v)) throw WriteError("cannot write a non-finite number in a skeleton file");
-  char buf[64];
-  auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
-  out.append(buf, ec == std::errc() ? end : buf);
+  append_shortest(out, v);
 }
 
 void put_vec(std::string& out, const char* key, const Vec3& v) {
@@ -187,11 +186,7 @@ class Reader {
     return o;
   }
 
-  static std::string number_text(double d) {
-    char buf[64];
-    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, d);
-    return std::string(buf, ec == std::errc() ? end : buf);
-  }
+  static std::string number_text(double d) { return shortest_text(d); }
 
  private:
   const std::string& file_;

@@ -5,6 +5,8 @@
 
 #include <charconv>
 
+#include "core/number_text.h"
+
 namespace ramus::detail {
 namespace {
 
@@ -53,9 +55,7 @@ Level level_of(const ast::Expr& e) {
 
 std::string number_text(const ast::NumberLit& n) {
   if (!n.text.empty()) return n.text;
-  char buf[64];
-  auto r = std::to_chars(buf, buf + sizeof buf, n.value);
-  return std::string(buf, r.ptr);
+  return shortest_text(n.value);
 }
 
 std::string expr_at(const ast::Expr& e, Level min);

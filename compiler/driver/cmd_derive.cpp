@@ -5,7 +5,6 @@
 // tests:
 //   length <modules> / count <symbol> <n> (by name, byte order) / sum F.<k> <value> /
 //   steps <n> / time <seconds> s
-#include <charconv>
 #include <cstdio>
 #include <map>
 #include <optional>
@@ -16,6 +15,7 @@
 #include "compiler/driver/grow_args.h"
 #include "compiler/turtle.h"
 #include "core/atomic_file.h"
+#include "core/number_text.h"
 #include "formats/skeleton_json.h"
 
 namespace ramus::cli {
@@ -29,11 +29,7 @@ struct DeriveArgs {
   std::string skeleton;
 };
 
-std::string num(double v) {
-  char buf[64];
-  auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
+std::string num(double v) { return shortest_text(v); }
 
 void print_stats(const ir::Grammar& g, const ModuleString& s, const DeriveStats& st) {
   std::vector<std::uint64_t> counts(g.symbols.size(), 0);

@@ -2,18 +2,15 @@
 
 #include <array>
 #include <bit>
-#include <charconv>
 #include <cstring>
+
+#include "core/number_text.h"
 
 namespace ramus::rmb {
 
 namespace {
 
-std::string number(double v) {
-  char buf[64];
-  auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
+std::string number(double v) { return shortest_text(v); }
 
 // Printable text for a dump: quotes, with bytes outside 0x20..0x7e escaped.
 std::string quoted(std::string_view s) {

@@ -41,10 +41,6 @@ const T& item(const Block& b, std::size_t i) {
   return std::get<T>(b.items[i]);
 }
 
-const ast::Expr& const_value(const Parsed& p, std::size_t i) {
-  return decl<ast::ConstDecl>(p, i).bindings.at(0).value;
-}
-
 // Fully parenthesized rendering of an expression, to check precedence and associativity.
 std::string show(const ast::Expr& e) {
   static const char* bin[] = {"||", "&&", "==", "!=", "<", "<=", ">",
