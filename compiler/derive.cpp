@@ -1,8 +1,5 @@
 #include "compiler/derive.h"
 
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#include <tbb/task_arena.h>
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,6 +10,7 @@
 
 #include "compiler/context.h"
 #include "compiler/expr_vm.h"
+#include "compiler/parallel_chunks.h"
 
 namespace ramus {
 
@@ -175,13 +173,7 @@ void for_chunks(std::size_t nchunks, int threads, const Body& body) {
   if (nchunks == 1 || threads == 1) {
     for (std::size_t c = 0; c < nchunks; ++c) run(c);
   } else {
-    tbb::task_arena arena(threads > 0 ? threads : tbb::task_arena::automatic);
-    arena.execute([&] {
-      tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nchunks, 1),
-                        [&](const tbb::blocked_range<std::size_t>& r) {
-                          for (std::size_t c = r.begin(); c < r.end(); ++c) run(c);
-                        });
-    });
+    run_chunks_parallel(nchunks, threads, run);
   }
   for (auto& e : errors) {
     if (e) std::rethrow_exception(e);

@@ -1,0 +1,36 @@
+# Proves ramus_runtime uses no Boost, Eigen or TBB: (1) none is among the libraries the target
+# links, and (2) no header any of its sources includes, followed transitively by the compiler
+# (-M), lies under boost/, eigen3/, Eigen/, tbb/ or oneapi/. Run by ctest as
+#   cmake -DCXX=... -DROOT=... -DSOURCES=a.cpp|b.cpp -DLIBS=x|y -P check_no_heavy_deps.cmake
+string(REPLACE "|" ";" SOURCES "${SOURCES}")
+string(REPLACE "|" ";" LIBS "${LIBS}")
+set(forbidden "(^|[/:])(boost|Boost|eigen3|Eigen|Eigen3|tbb|TBB|oneapi|nanoflann)([/:]|$)")
+foreach(lib ${LIBS})
+  if(lib MATCHES "${forbidden}")
+    message(FATAL_ERROR "ramus_runtime links ${lib}")
+  endif()
+endforeach()
+set(count 0)
+foreach(src ${SOURCES})
+  if(NOT IS_ABSOLUTE "${src}")
+    set(src "${ROOT}/runtime/${src}")
+  endif()
+  # -M (not -MM): system headers too, where Boost and TBB would live.
+  execute_process(COMMAND ${CXX} -std=c++20 -I${ROOT} -M ${src}
+    OUTPUT_VARIABLE deps ERROR_VARIABLE errors RESULT_VARIABLE rc)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "cannot scan ${src}: ${errors}")
+  endif()
+  string(REPLACE "\\\n" " " deps "${deps}")
+  separate_arguments(deps UNIX_COMMAND "${deps}")
+  foreach(dep ${deps})
+    if(dep MATCHES "${forbidden}")
+      message(FATAL_ERROR "${src} includes ${dep}")
+    endif()
+  endforeach()
+  math(EXPR count "${count} + 1")
+endforeach()
+if(count LESS 5)
+  message(FATAL_ERROR "expected the runtime's sources, got ${count}")
+endif()
+message(STATUS "ramus_runtime: ${count} sources, no Boost/Eigen/TBB")
