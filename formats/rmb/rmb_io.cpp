@@ -100,23 +100,18 @@ std::uint8_t Reader::u8(const char* field) {
   return v;
 }
 
-std::uint16_t Reader::u16(const char* field) {
-  need(2, field);
+template <typename T>
+T Reader::little_endian(const char* field) {
+  need(sizeof(T), field);
   const std::size_t at = pos_;
-  std::uint16_t v = 0;
-  for (int i = 0; i < 2; ++i) v |= std::uint16_t(std::uint8_t(data_[pos_++]) << (8 * i));
+  T v = 0;
+  for (std::size_t i = 0; i < sizeof(T); ++i) v |= T(T(std::uint8_t(data_[pos_++])) << (8 * i));
   if (trace_) note(at, field, std::to_string(v));
   return v;
 }
 
-std::uint32_t Reader::u32(const char* field) {
-  need(4, field);
-  const std::size_t at = pos_;
-  std::uint32_t v = 0;
-  for (int i = 0; i < 4; ++i) v |= std::uint32_t(std::uint8_t(data_[pos_++])) << (8 * i);
-  if (trace_) note(at, field, std::to_string(v));
-  return v;
-}
+std::uint16_t Reader::u16(const char* field) { return little_endian<std::uint16_t>(field); }
+std::uint32_t Reader::u32(const char* field) { return little_endian<std::uint32_t>(field); }
 
 std::uint64_t Reader::varint(const char* field) {
   const std::size_t at = pos_;

@@ -93,6 +93,8 @@ class Reader {
  private:
   void need(std::size_t n, const char* field) const;
   void note(std::size_t at, const char* field, std::string value);
+  template <typename T>
+  T little_endian(const char* field);  // u16/u32: fixed-width little-endian
 
   std::string_view data_;
   std::size_t pos_, end_;

@@ -139,19 +139,23 @@ ScanResult prescan(std::string_view t, std::uint32_t file) {
   return r;
 }
 
+// Where a comment or string literal starting at p ends; nullopt when none starts there. Error
+// recovery must not stop at a `;` or `}` inside either.
+static std::optional<std::size_t> skip_comment_or_string(std::string_view t, std::size_t p) {
+  if (auto e = skip_comment(t, p, nullptr)) return e;
+  if (t[p] == '"') return skip_string(t, p);
+  return std::nullopt;
+}
+
 std::size_t recover_in_block(std::string_view t, std::size_t p) {
   int depth = 0;  // ( and [ opened after p
   int braces = 0;
   while (p < t.size()) {
-    if (auto e = skip_comment(t, p, nullptr)) {
+    if (auto e = skip_comment_or_string(t, p)) {
       p = *e;
       continue;
     }
     char c = t[p];
-    if (c == '"') {
-      p = skip_string(t, p);
-      continue;
-    }
     if (c == '(' || c == '[') {
       ++depth;
     } else if ((c == ')' || c == ']') && depth > 0) {
@@ -197,15 +201,11 @@ std::size_t recover_at_file_level(std::string_view t, std::size_t p) {
   int braces = 0;
   while (p < t.size()) {
     if (braces == 0 && declaration_starts_line(t, p)) return p;
-    if (auto e = skip_comment(t, p, nullptr)) {
+    if (auto e = skip_comment_or_string(t, p)) {
       p = *e;
       continue;
     }
     char c = t[p];
-    if (c == '"') {
-      p = skip_string(t, p);
-      continue;
-    }
     if (c == '{') {
       ++braces;
     } else if (c == '}') {
