@@ -16,6 +16,7 @@ void add_preview(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_reconstruct(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_scan(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_dump(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_infer(CLI::App&, const GlobalOptions&, std::function<int()>&);
 
 const std::vector<CommandSpec>& command_table() {
   static const std::vector<CommandSpec> table = {
@@ -25,6 +26,7 @@ const std::vector<CommandSpec>& command_table() {
       {"derive", add_derive},
       {"compress", add_compress},
       {"enhance", add_enhance},
+      {"infer", add_infer},
       {"inspect", add_inspect},
       {"build", add_build},
       {"preview", add_preview},
