@@ -40,6 +40,9 @@ struct Pass {
     const std::uint32_t b = table.first[s], e = table.first[s + 1];
     if (b == e) return 0;
     LazyRng rng(info.seed, info.key, 2 * std::uint64_t(i));
+    if (g.selection == ir::Selection::Nearest && &table == &g.rewrite) {
+      return choose_nearest(i, b, e, slots, rng);
+    }
     for (std::uint32_t k = b; k < e; ++k) {
       const ir::Production& p = g.productions[table.index[k]];
       if (!match_production(g, p, in, ctx, i, slots)) continue;
@@ -55,6 +58,50 @@ struct Pass {
       }
     }
     return 0;
+  }
+
+  // Rule-space selection (docs/language.md, "Rule-space selection"; Friedman & Stamos III-G):
+  // every candidate's pattern and guard is tried in file order; among the matches with a key,
+  // the one whose key is nearest (Euclidean) to the `select nearest` point evaluated with its own
+  // bindings wins, ties going to the earlier production; without a keyed match, the first match.
+  std::uint32_t choose_nearest(std::size_t i, std::uint32_t b, std::uint32_t e, double* slots,
+                               LazyRng& rng) const {
+    std::uint32_t best = e, first = e;
+    double best_d2 = 0;
+    for (std::uint32_t k = b; k < e; ++k) {
+      const ir::Production& p = g.productions[table.index[k]];
+      if (!match_production(g, p, in, ctx, i, slots)) continue;
+      try {
+        if (p.guard != ir::kNoCode && eval(g, p.guard, slots, rng) == 0) continue;
+        if (p.key.empty()) {
+          if (first == e) first = k;
+          continue;
+        }
+        double d2 = 0;
+        for (std::size_t c = 0; c < p.key.size(); ++c) {
+          const double d = eval(g, p.query[c], slots, rng) - p.key[c];
+          d2 += d * d;
+        }
+        if (best == e || d2 < best_d2) {
+          best = k;
+          best_d2 = d2;
+        }
+      } catch (const ExprError& err) {
+        throw DeriveError(describe(g, p, err, info, i));
+      }
+    }
+    const std::uint32_t chosen = best != e ? best : first;
+    if (chosen == e) return 0;
+    const ir::Production& p = g.productions[table.index[chosen]];
+    match_production(g, p, in, ctx, i, slots);  // the slots of the chosen production
+    if (p.alt_end - p.alt_begin == 1 && g.alternatives[p.alt_begin].probability == ir::kNoCode) {
+      return p.alt_begin + 1;
+    }
+    try {
+      return pick(p, slots, rng) + 1;
+    } catch (const ExprError& err) {
+      throw DeriveError(describe(g, p, err, info, i));
+    }
   }
 
   // Stochastic choice: alternative k with probability p_k / sum(p) (ABOP ch. 1.7).
@@ -323,9 +370,6 @@ bool may_cut(const ir::Grammar& g) {
 ModuleString derive(const ir::Grammar& g, const DeriveOptions& options, DeriveStats* stats) {
   const auto t0 = std::chrono::steady_clock::now();
   const int steps = options.steps.value_or(g.settings.derive);
-  if (g.selection != ir::Selection::FirstMatch) {
-    throw DeriveError("rule selection `select nearest` is not supported by derivation yet");
-  }
   if (steps < 0) throw DeriveError("the number of steps must not be negative");
   std::size_t peak = 0;
   PassInfo info;

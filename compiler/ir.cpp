@@ -99,6 +99,13 @@ void dump_production(const Grammar& g, std::uint32_t pi, std::string& out) {
   if (!p.right.empty()) out += " >";
   for (const auto& r : p.right) out += " " + pattern_text(g, r);
   if (p.guard != kNoCode) out += " : {" + dump_code(g, p.guard) + "}";
+  if (!p.key.empty()) {  // rule-space key and the `select nearest` query in this production's slots
+    out += " @ (";
+    for (std::size_t k = 0; k < p.key.size(); ++k) {
+      out += (k ? ", " : "") + shortest_text(p.key[k]) + " ~ {" + dump_code(g, p.query[k]) + "}";
+    }
+    out += ")";
+  }
   out += "\n";
   for (std::uint32_t a = p.alt_begin; a < p.alt_end; ++a) {
     const Alternative& alt = g.alternatives[a];
@@ -207,6 +214,7 @@ std::string dump(const Grammar& g) {
          " width_decay=" + num(s.width_decay) + " tropism=" + num(s.tropism[0]) + "," +
          num(s.tropism[1]) + "," + num(s.tropism[2]) + " elasticity=" + num(s.elasticity) +
          " max_depth=" + std::to_string(s.max_depth) + "\n";
+  if (g.selection == Selection::Nearest) out += "selection nearest\n";
   for (const Constant& c : g.constants) {
     out += std::string(c.is_param ? "param " : "const ") + c.name + " = " + num(c.value) + "\n";
   }

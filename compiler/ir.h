@@ -138,6 +138,11 @@ struct Production {
   std::uint16_t nslots = 0;
   std::uint32_t where = 0;  // index into Grammar::locations
   std::string text;         // the production as written, for error messages and dumps
+  // Rule-space selection (Selection::Nearest): the production's constant key `@ (k1, ..., kn)`
+  // and the `select nearest(e1, ..., en)` expressions compiled in this production's slots. Both
+  // empty for a production without a key.
+  std::vector<double> key;
+  std::vector<CodeId> query;
   bool has_context() const { return !left.empty() || !right.empty(); }
 };
 
@@ -151,8 +156,8 @@ struct Table {
   bool empty() const { return index.empty(); }
 };
 
-// How a module picks among the matching productions. Only FirstMatch is implemented; Nearest is
-// reserved for rule-space selection (`select nearest(...)`, Friedman & Stamos III-G).
+// How a module picks among the matching productions: the first in file order, or the keyed
+// production nearest in rule space (`select nearest(...)`, Friedman & Stamos III-G; derive.cpp).
 enum class Selection : std::uint8_t { FirstMatch, Nearest };
 
 struct Settings {

@@ -32,6 +32,9 @@ class Lowerer {
     g_ = ir::make_grammar(ls.name.name);
     g_.constants = constants_;
     arity_.assign(g_.symbols.size(), -2);
+    for (const auto& item : ls.items) {  // `select` may follow the productions it governs
+      if (const auto* s = std::get_if<ast::Select>(&item)) select_ = s;
+    }
     for (const auto& item : ls.items) lower_item(item);
     finish_symbol_sets();
     if (opt_.seed) g_.settings.seed = *opt_.seed;
@@ -331,6 +334,7 @@ class Lowerer {
     }
     p.nslots = std::uint16_t(scope.params.size());
     if (ap.guard) p.guard = compile(*ap.guard, scope);
+    lower_rule_key(ap, p, scope);
     const std::uint32_t id = std::uint32_t(g_.productions.size());
     p.alt_begin = std::uint32_t(g_.alternatives.size());
     for (const ast::Alternative& a : ap.alternatives) {
@@ -346,6 +350,30 @@ class Lowerer {
     g_.productions.push_back(std::move(p));
   }
 
+  // The production's rule-space key (constants) and the `select nearest` expressions over its
+  // parameters (docs/language.md, "Rule-space selection"). The checks have reported keys that
+  // do not fit; here such a key is dropped with a diagnostic.
+  void lower_rule_key(const ast::Production& ap, ir::Production& p, const ExprScope& scope) {
+    if (ap.key.empty()) return;
+    if (!select_ || select_->mode.name != "nearest" || p.kind != ir::Kind::Rewrite ||
+        select_->keys.size() != ap.key.size()) {
+      error(DiagCode::RuleKeyUnused, ap.key.front().span,
+            "this rule-space key does not fit the lsystem's 'select nearest'");
+      return;
+    }
+    for (const ast::Expr& k : ap.key) {
+      FoldResult r = evaluate_constant(k, [this](std::string_view n) { return lookup(n); });
+      if (!r.value) {
+        error(DiagCode::ConstantNotFinite, k.span,
+              r.error ? r.error->message : "a rule-space key must be constant");
+        p.key.clear();
+        return;
+      }
+      p.key.push_back(*r.value);
+    }
+    for (const ast::Expr& e : select_->keys) p.query.push_back(compile(e, scope));
+  }
+
   const Program& prog_;
   const SourceManager& sm_;
   const LowerOptions& opt_;
@@ -356,6 +384,7 @@ class Lowerer {
   std::vector<int> arity_;  // -2 unseen, -1 varies, else the parameter count
   std::vector<ir::SymbolId> ignored_, considered_;
   bool has_consider_ = false;
+  const ast::Select* select_ = nullptr;
 };
 
 }  // namespace

@@ -27,7 +27,10 @@ class Box {
   Box(T v) : p_(std::make_unique<T>(std::move(v))) {}  // NOLINT: implicit by design
   Box(const Box& o) : p_(std::make_unique<T>(*o.p_)) {}
   Box(Box&&) noexcept = default;
-  Box& operator=(const Box& o) { p_ = std::make_unique<T>(*o.p_); return *this; }
+  Box& operator=(const Box& o) {
+    p_ = std::make_unique<T>(*o.p_);
+    return *this;
+  }
   Box& operator=(Box&&) noexcept = default;
   T& operator*() { return *p_; }
   const T& operator*() const { return *p_; }
@@ -95,7 +98,8 @@ struct Expr {
 // ---- modules -----------------------------------------------------------------------------
 
 // A module in an axiom or successor: `A(l*r1, w)`, `F`, `+(30)`, `[`, `FF`.
-// `name` is the symbol as written: an identifier or one turtle character (+ - & ^ \ / | $ [ ] ! ' ~ %).
+// `name` is the symbol as written: an identifier or one turtle character (+ - & ^ \ / | $ [ ] ! ' ~
+// %).
 struct ModuleCall {
   std::string name;
   std::vector<Expr> args;
@@ -173,8 +177,8 @@ struct SymbolSet {  // ignore + - F;   consider A B;
 };
 // nearest-rule selection (rule space of Friedman & Stamos III-G): select nearest(e1, e2, ...);
 struct Select {
-  Identifier mode;          // "nearest" or "first" (the default)
-  std::vector<Expr> keys;   // the coordinates in rule space, over the predecessor's parameters
+  Identifier mode;         // "nearest" or "first" (the default)
+  std::vector<Expr> keys;  // the coordinates in rule space, over the predecessor's parameters
   SourceSpan span;
   bool operator==(const Select& o) const { return mode == o.mode && keys == o.keys; }
 };
@@ -188,18 +192,21 @@ struct Alternative {  // (p) successor    -- p absent for a deterministic produc
   }
 };
 enum class ProductionKind { Rewrite, Interpret, Decompose };
-// [left <] predecessor [> right] [: guard] -> alternatives ;
+// [left <] predecessor [> right] [: guard] [@ (k1, ..., kn)] -> alternatives ;
 struct Production {
   ProductionKind kind = ProductionKind::Rewrite;
   std::vector<ModulePattern> left_context;
   ModulePattern predecessor;
   std::vector<ModulePattern> right_context;
   std::optional<Expr> guard;
+  // The production's point in rule space (`select nearest`); empty when it has none.
+  std::vector<Expr> key;
   std::vector<Alternative> alternatives;  // one, or several each with a probability
   SourceSpan span;
   bool operator==(const Production& o) const {
     return kind == o.kind && left_context == o.left_context && predecessor == o.predecessor &&
-           right_context == o.right_context && guard == o.guard && alternatives == o.alternatives;
+           right_context == o.right_context && guard == o.guard && key == o.key &&
+           alternatives == o.alternatives;
   }
 };
 
@@ -227,7 +234,7 @@ struct Constructor {  // tube(length: 4, taper: 0.85)   mesh("pieces/psi.glb")
     return kind == o.kind && args == o.args && path == o.path;
   }
 };
-struct RimDecl {  // rim hexagon(radius: 1);
+struct RimDecl {    // rim hexagon(radius: 1);
   Identifier name;  // the rim shape's name
   std::vector<NamedArg> args;
   SourceSpan span;
@@ -256,7 +263,7 @@ struct AttachRule {  // I.top -> I 0.7 | Y 0.3;
 // root I;  twist any;  twist 2;  depth 10;  (a keyword and its values)
 struct PieceSetting {
   Identifier key;
-  std::vector<Expr> values;   // for root: a NameRef to the piece; for twist: `any` is a NameRef
+  std::vector<Expr> values;  // for root: a NameRef to the piece; for twist: `any` is a NameRef
   SourceSpan span;
   bool operator==(const PieceSetting& o) const { return key == o.key && values == o.values; }
 };
@@ -270,10 +277,10 @@ struct Pieces {
 
 // ---- voxels blocks ----------------------------------------------------------------------------
 
-struct VoxelRule {  // 7 -> [0 3 0 7 0 5 0 7] x3;
-  Expr parent;                  // a class number
-  std::vector<Expr> children;   // eight class numbers, in Morton order (x fastest)
-  std::optional<Expr> weight;   // count behind `x`
+struct VoxelRule {             // 7 -> [0 3 0 7 0 5 0 7] x3;
+  Expr parent;                 // a class number
+  std::vector<Expr> children;  // eight class numbers, in Morton order (x fastest)
+  std::optional<Expr> weight;  // count behind `x`
   SourceSpan span;
   bool operator==(const VoxelRule& o) const {
     return parent == o.parent && children == o.children && weight == o.weight;

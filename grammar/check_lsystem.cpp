@@ -44,6 +44,7 @@ class LSystemChecker {
     for (const ast::LSystemItem& item : ls_.items) {
       std::visit([&](const auto& i) { this->item(i); }, item);
     }
+    rule_keys();
     if (!axiom_) {
       cx_.error(DiagCode::MissingAxiom, ls_.name.span,
                 "lsystem '" + ls_.name.name + "' has no axiom");
@@ -141,6 +142,56 @@ class LSystemChecker {
     }
     probabilities(p, env, formals);
     for (const ast::Alternative& alt : p.alternatives) module_seq(alt.successor, env);
+    if (!p.key.empty()) keyed_.push_back({&p, std::move(formals)});
+  }
+
+  // Rule-space keys `@ (k1, ..., kn)` and `select nearest(e1, ..., en)` (docs/language.md,
+  // "Rule-space selection"): checked once the whole block is known, since `select` may follow
+  // the productions it governs.
+  void rule_keys() {
+    const bool nearest = select_ && select_->mode.name == "nearest";
+    if (nearest && select_->keys.empty()) {
+      cx_.error(DiagCode::RuleKeyCount, select_->span,
+                "'select nearest' needs at least one coordinate");
+      cx_.note("e.g. 'select nearest(l, w);' over the predecessor's parameters");
+    }
+    bool query_reported = false;  // report unknown names in the query once, not per production
+    for (const auto& [p, formals] : keyed_) {
+      SourceSpan span = p->key.front().span;
+      span.end = p->key.back().span.end;
+      if (!nearest) {
+        cx_.error(DiagCode::RuleKeyUnused, span,
+                  "this production has a rule-space key but the lsystem does not select nearest");
+        cx_.note("add 'select nearest(...)' with one expression per key coordinate");
+        continue;
+      }
+      if (p->kind != ast::ProductionKind::Rewrite) {
+        cx_.error(DiagCode::RuleKeyUnused, span,
+                  std::string("an ") +
+                      (p->kind == ast::ProductionKind::Interpret ? "interpret" : "decompose") +
+                      " production takes no rule-space key");
+        cx_.note("nearest selection chooses among rewriting productions only");
+        continue;
+      }
+      ExprEnv constant;
+      constant.file = file_;
+      constant.constant_context = "a rule-space key";
+      for (const ast::Expr& k : p->key) cx_.check_number(k, constant, "a rule-space key");
+      if (!select_->keys.empty() && p->key.size() != select_->keys.size()) {
+        cx_.error(DiagCode::RuleKeyCount, span,
+                  "the key has " + plural(p->key.size(), "coordinate") +
+                      " but 'select nearest' has " + std::to_string(select_->keys.size()));
+        cx_.note(select_->span, "the selection is given here");
+      }
+      if (query_reported) continue;
+      ExprEnv query;
+      query.file = file_;
+      query.formals = &formals;
+      for (const ast::Expr& e : select_->keys) {
+        if (cx_.check_expr(e, query) == Type::Error) query_reported = true;
+      }
+      if (query_reported) cx_.note(p->span, "for this production");
+    }
   }
 
   void probabilities(const ast::Production& p, const ExprEnv& env, const Formals& formals) {
@@ -245,6 +296,8 @@ class LSystemChecker {
   const ast::LSystem& ls_;
   const ast::Axiom* axiom_ = nullptr;
   const ast::Select* select_ = nullptr;
+  // Productions with a rule-space key and the formal parameters they bind.
+  std::vector<std::pair<const ast::Production*, Formals>> keyed_;
   std::unordered_map<std::string, SourceSpan> settings_;
   // Undeclared modules of this block: arity and place of the first use.
   std::unordered_map<std::string, std::pair<std::size_t, SourceSpan>> arity_;

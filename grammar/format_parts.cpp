@@ -220,6 +220,7 @@ std::string fmt_production_head(const ast::Production& p) {
   s += fmt_pattern(p.predecessor);
   if (!p.right_context.empty()) s += " > " + fmt_pattern_seq(p.right_context);
   if (p.guard) s += " : " + fmt_expr(*p.guard);
+  if (!p.key.empty()) s.append(" @ (").append(args_text(p.key)).append(")");
   return s + " ->";
 }
 

@@ -1,17 +1,32 @@
 // ramus enhance SCAN -o OUT.ply|.xyz [--grid 64] [--seed 1] [--classes 17] [--scanner x,y,z]
-// Super-resolution of a scan with its own voxel grammar (Friedman & Stamos 2013, III-C/III-D):
-// the scan is aligned and voxelized at --grid, a voxel grammar is learned from its nonstandard
-// Haar pyramid, the grammar synthesizes the wavelets of one more level, and the inverse transform
-// gives a grid of twice the side. Writes the centres of the occupied voxels (world coordinates)
-// and prints how the result and plain upsampling compare with the scan voxelized at twice the side.
+// ramus enhance SCAN --levels K -o OUT.glb|.gltf|.obj|.ply|.xyz [--grid 64] [--seed 1] ...
+// Without --levels: super-resolution of a scan with its own voxel grammar (Friedman & Stamos 2013,
+// III-C/III-D): the scan is aligned and voxelized at --grid, a voxel grammar is learned from its
+// nonstandard Haar pyramid, the grammar synthesizes the wavelets of one more level, and the
+// inverse transform gives a grid of twice the side. Writes the centres of the occupied voxels
+// (world coordinates) and prints how the result and plain upsampling compare with the scan
+// voxelized at twice the side.
+// With --levels K: enhancement by the L-rules (IV-B): the grammar `ramus infer --method wavelet`
+// would write is derived K steps beyond the finest dyad it regenerates, each step refining every
+// vector into the vectors of the next finer dyad. Writes the tree as a mesh (.glb .gltf .obj) or
+// as points along its branches (.ply .xyz), in world coordinates.
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 #include <string>
 
+#include "backends/mesh/gltf_writer.h"
+#include "backends/mesh/openmesh_writer.h"
+#include "backends/mesh/tree_mesh.h"
+#include "compiler/derive.h"
 #include "compiler/driver/command.h"
 #include "compiler/driver/scan_args.h"
+#include "compiler/infer/wavelet/fidelity.h"
+#include "compiler/infer/wavelet/infer_grammar.h"
 #include "compiler/infer/wavelet/super_resolution.h"
 #include "compiler/infer/wavelet/voxelize.h"
+#include "compiler/pipeline.h"
+#include "compiler/turtle.h"
 #include "formats/point_cloud_io.h"
 
 namespace ramus::cli {
@@ -23,6 +38,7 @@ struct EnhanceArgs {
   int grid = 64;
   std::uint64_t seed = 1;
   int classes = wavelet::kDefaultClasses;
+  int levels = 0;  // > 0: L-rule enhancement by this many derivation steps
 };
 
 bool ends_with(const std::string& s, const std::string& tail) {
@@ -42,8 +58,112 @@ void print_comparison(const wavelet::ResolutionComparison& c, std::size_t side) 
               c.surface_upsampled);
 }
 
+// The skeleton in world coordinates: positions and turtle frames rotated back (III-A).
+Skeleton to_world(Skeleton s, const wavelet::Alignment& al) {
+  auto direction = [&al](const Vec3& v) { return al.to_world(v) - al.to_world(Vec3{}); };
+  for (SkeletonNode& n : s.nodes) {
+    n.position = al.to_world(n.position);
+    n.heading = direction(n.heading), n.left = direction(n.left), n.up = direction(n.up);
+  }
+  for (OrganAnchor& o : s.organs) {
+    o.position = al.to_world(o.position);
+    o.heading = direction(o.heading), o.left = direction(o.left), o.up = direction(o.up);
+  }
+  return s;
+}
+
+// Section IV-B: "L-System productions can be applied iteratively each time yielding a more
+// intricately detailed structure." The inferred grammar derives `derive` steps to regenerate the
+// finest dyad; K more steps go K dyads beyond the scan's resolution.
+int run_enhance_levels(const EnhanceArgs& a, const GlobalOptions& global) {
+  using namespace wavelet;
+  const bool mesh_out =
+      ends_with(a.output, ".glb") || ends_with(a.output, ".gltf") || ends_with(a.output, ".obj");
+  if (!mesh_out && !ends_with(a.output, ".ply") && !ends_with(a.output, ".xyz")) {
+    throw UserError(
+        "-o: with --levels the output must end in .glb, .gltf, .obj, .ply or .xyz, not '" +
+        a.output + "'");
+  }
+  WaveletInferOptions io;
+  io.grid = a.grid;
+  io.seed = a.seed;
+  io.classes = a.classes;
+  io.source = file_name(a.scan);
+  try {
+    validate_options(io);
+    (void)make_quantizer(1.0, a.classes);
+  } catch (const std::invalid_argument& e) {
+    throw UserError(std::string(e.what()) + " (--classes must be odd in [3, 255])");
+  }
+  const AlignedScan scan = read_aligned_scan(a.scan, a.scanner, "enhance", global.quiet);
+  WaveletInference inference;
+  try {
+    inference = infer_wavelet_grammar(scan.aligned, io);
+  } catch (const std::invalid_argument& e) {
+    throw UserError(a.scan + ": " + e.what());
+  }
+  SourceManager sources;
+  DiagnosticSink diagnostics;
+  const ir::Grammar g =
+      lower_text("inferred.ramus", inference.ramus_text, GrowOptions{}, sources, diagnostics);
+  const int steps = g.settings.derive + a.levels;
+  DeriveOptions d;
+  d.steps = steps;
+  DeriveStats stats;
+  TurtleOptions t;
+  t.seed = g.settings.seed;
+  t.steps = steps;
+  Skeleton tree;
+  try {
+    tree = interpret(g, derive(g, d, &stats), t);
+  } catch (const DeriveError& e) {
+    throw UserError(e.what());
+  }
+  // The scan at the input resolution, to compare with and to size the output sampling.
+  VoxelizeOptions vo;
+  vo.levels = levels_for_side(std::uint64_t(a.grid));
+  const VoxelGrid input = voxelize(scan.aligned, vo);
+  const Skeleton world = to_world(tree, scan.aligned.alignment);
+  if (mesh_out) {
+    mesh::MeshOptions mo;
+    mo.name = std::filesystem::path(a.scan).stem().string();  // not the output name: same bytes
+    try {
+      if (ends_with(a.output, ".obj")) {
+        mesh::write_openmesh(mesh::build_tree_mesh(world, mo, 0), a.output);
+      } else {
+        mesh::write_gltf(mesh::build_tree_lods(world, mo), a.output);
+      }
+    } catch (const mesh::MeshError& e) {
+      throw UserError(a.output + ": " + e.what());
+    }
+  } else {
+    PointCloud out;
+    out.source = a.scan;
+    out.offset = scan.aligned.alignment.root;
+    // Points half a finest cell apart: a cell of dyad L-1+K is 2^(1-K) input voxels.
+    const double step = input.voxel_size / double(1 << a.levels);
+    for (const Vec3& p : sample_skeleton(world, step))
+      out.positions.push_back(Vec3f(p - out.offset));
+    if (ends_with(a.output, ".ply")) {
+      write_point_cloud_ply(a.output, out);
+    } else {
+      write_point_cloud_xyz(a.output, out);
+    }
+  }
+  std::printf("%s: %zu points -> %zu^3 grid -> grammar with %zu productions, axiom dyad %d\n",
+              file_name(a.scan).c_str(), scan.cloud.size(), inference.grid_side,
+              inference.productions, inference.axiom_level);
+  std::printf("derived %d step(s) (%d beyond the scan's finest dyad): modules per step", steps,
+              a.levels);
+  for (std::size_t n : stats.lengths) std::printf(" %zu", n);
+  std::printf("\nenhanced tree: %zu nodes; voxel IoU with the scan at %zu^3: %.3f\n", tree.size(),
+              input.n, voxel_iou(input, 0, voxelize_skeleton(tree, input), 0));
+  return 0;
+}
+
 int run_enhance(const EnhanceArgs& a, const GlobalOptions& global) {
   using namespace wavelet;
+  if (a.levels > 0) return run_enhance_levels(a, global);
   if (!ends_with(a.output, ".ply") && !ends_with(a.output, ".xyz")) {
     throw UserError("-o: the output must end in .ply or .xyz, not '" + a.output + "'");
   }
@@ -84,7 +204,8 @@ int run_enhance(const EnhanceArgs& a, const GlobalOptions& global) {
 void add_enhance(CLI::App& app, const GlobalOptions& global, std::function<int()>& run) {
   auto args = std::make_shared<EnhanceArgs>();
   CLI::App* sub = app.add_subcommand(
-      "enhance", "super-resolution of a scan with its own voxel grammar (writes voxel centres)");
+      "enhance",
+      "super-resolution of a scan with its own voxel grammar, or (--levels) its L-rules iterated");
   sub->add_option("SCAN", args->scan, "point cloud (.ply .xyz .txt .asc .las .pcd)")->required();
   sub->add_option("-o,--output", args->output, "output points, .ply or .xyz")->required();
   sub->add_option("--grid", args->grid,
@@ -92,6 +213,10 @@ void add_enhance(CLI::App& app, const GlobalOptions& global, std::function<int()
   sub->add_option("--seed", args->seed, "seed of the stochastic rule choice (default 1)");
   sub->add_option("--classes", args->classes, "coefficient classes, odd (default 17)");
   sub->add_option("--scanner", args->scanner, "scanner position x,y,z (default: from the file)");
+  sub->add_option("--levels", args->levels,
+                  "enhance by the inferred L-rules instead: derive K steps beyond the scan's "
+                  "finest dyad (output .glb .gltf .obj mesh, or .ply .xyz points)")
+      ->check(CLI::Range(1, 6));
   sub->callback(
       [args, &global, &run] { run = [args, &global] { return run_enhance(*args, global); }; });
 }

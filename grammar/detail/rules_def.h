@@ -428,8 +428,9 @@ auto const successors_def =
     (alternative % '|')[assign] |
     det_alternative[([](auto& c) { _val(c).push_back(std::move(_attr(c))); })];
 // production = [ "interpret" | "decompose" ] [ pattern_seq "<" ] module_pat
-//              [ ">" pattern_seq ] [ ":" expr ] "->" successors ";" ;
-auto const kind_stop = lit("->") | lit('<') | lit('>') | lit(':') | lit('(') | lit(';');
+//              [ ">" pattern_seq ] [ ":" expr ] [ "@" "(" expr { "," expr } ")" ]
+//              "->" successors ";" ;
+auto const kind_stop = lit("->") | lit('<') | lit('>') | lit(':') | lit('@') | lit('(') | lit(';');
 auto const production_def = spanned(
     -((kw("interpret") >>
        !kind_stop)[([](auto& c) { _val(c).kind = ast::ProductionKind::Interpret; })] |
@@ -438,8 +439,11 @@ auto const production_def = spanned(
     -(pattern_seq >> lit('<'))[([](auto& c) { _val(c).left_context = std::move(_attr(c)); })] >>
     module_pat[([](auto& c) { _val(c).predecessor = std::move(_attr(c)); })] >>
     -(lit('>') >> pattern_seq)[([](auto& c) { _val(c).right_context = std::move(_attr(c)); })] >>
-    -(lit(':') > expr)[([](auto& c) { _val(c).guard = std::move(_attr(c)); })] >> lit("->") >
-    successors[([](auto& c) { _val(c).alternatives = std::move(_attr(c)); })] > lit(';'));
+    -(lit(':') > expr)[([](auto& c) { _val(c).guard = std::move(_attr(c)); })] >>
+    -(lit('@') > lit('(') > (expr % ',') >
+      lit(')'))[([](auto& c) { _val(c).key = std::move(_attr(c)); })] >>
+    lit("->") > successors[([](auto& c) { _val(c).alternatives = std::move(_attr(c)); })] >
+    lit(';'));
 // axiom = "axiom" module_seq ";" ;
 auto const axiom_def = spanned(
     kw("axiom") >> module_seq[([](auto& c) { _val(c).modules = std::move(_attr(c)); })] > lit(';'));
