@@ -9,10 +9,12 @@
 #pragma once
 
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "compiler/infer/wavelet/voxel_grammar.h"
 #include "compiler/ir.h"
 #include "formats/rmb/rmb_io.h"
 
@@ -34,12 +36,64 @@ enum class RmbSection : std::uint8_t {
   Axiom = 8,
   Ignored = 9,
   Pieces = 10,      // reserved: piece sets
-  VoxelRules = 11,  // reserved: voxel rule tables
+  VoxelRules = 11,  // optional: the voxel rule tables of `voxels` blocks
 };
 
-// Deterministic: the same grammar always gives the same bytes. Throws RmbError (offset 0) if the
-// grammar holds something the format cannot carry (an id out of range in a malformed IR).
-std::string encode_rmb(const ir::Grammar& g);
+// One `voxels` block (docs/language.md) as the voxel rule table section (id 11) stores it:
+// the settings that were written and the rules in block order. A rule is the voxel grammar's
+// (compiler/infer/wavelet/voxel_grammar.h): parent class -> eight child classes, weighted by
+// `count`; the block has no subbands, so `subband` is always kDiagonalSubband (the dyads
+// proper), and `count` 0 means the rule was written without `x weight`.
+struct RmbVoxelTable {
+  std::string name;
+  std::optional<std::uint32_t> levels;   // 1..64
+  std::optional<std::uint32_t> classes;  // 1..256: classes are bytes
+  std::optional<std::uint64_t> seed;
+  std::optional<std::string> axiom;  // the axiom grid's file name, as written
+  std::vector<wavelet::VoxelRule> rules;
+};
+
+// Everything an .rmb holds: the lsystem block and the voxel rule tables.
+struct RmbContents {
+  ir::Grammar grammar;
+  std::vector<RmbVoxelTable> voxels;
+};
+
+// Header flags (u16 at offset 6).
+inline constexpr std::uint16_t kRmbQuantized = 1;  // bit 0: reals quantized (lossy, on request)
+inline constexpr std::uint16_t kRmbZstd = 2;       // bit 1: the sections are one zstd frame
+inline constexpr std::uint16_t kRmbStripped = 4;   // bit 2: no locations, no production texts
+inline constexpr std::uint16_t kRmbKnownFlags = kRmbQuantized | kRmbZstd | kRmbStripped;
+
+struct RmbEncodeOptions {
+  // Lossy only when set: every real (settings, constants, the constant pool) is stored as the
+  // nearest multiple of 2^e, the largest power of two <= 2 * tolerance, so each decoded value
+  // is within `tolerance` of the original (integers and multiples of 2^e stay exact).
+  std::optional<double> tolerance;
+  bool zstd = false;  // compress the sections with zstd (rmb_zstd.h)
+  // Leave out the debug information: source locations and production texts. A decoded
+  // stripped grammar names each production by its index instead ("production 3"; see
+  // rmb_stripped_location), for error messages and dumps alike.
+  bool strip = false;
+};
+
+// What a decoded stripped file has in place of the missing debug information: production i's
+// location (also that of every expression it holds) is "production i" and its text "#i";
+// expressions of the axiom, and those nothing refers to, are at "axiom".
+std::string rmb_stripped_location(std::size_t production);
+inline constexpr std::string_view kRmbStrippedAxiomLocation = "axiom";
+
+// The quantum exponent e for a tolerance (> 0): 2^e <= 2 * tolerance, clamped to the range
+// the format allows. Throws RmbError for a tolerance that is not a positive finite number.
+int rmb_quantum_exponent(double tolerance);
+
+// Deterministic: the same grammar and options always give the same bytes. Throws RmbError
+// (offset 0) if the grammar holds something the format cannot carry (an id out of range in a
+// malformed IR).
+std::string encode_rmb(const ir::Grammar& g, const RmbEncodeOptions& options = {});
+// With voxel rule tables (section 11, written only when `voxels` is not empty).
+std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& voxels,
+                       const RmbEncodeOptions& options = {});
 
 struct RmbDecodeOptions {
   // Off only for fuzzing, to reach the structural checks behind the checksum.
@@ -48,6 +102,14 @@ struct RmbDecodeOptions {
 
 ir::Grammar decode_rmb(std::string_view bytes, const RmbDecodeOptions& options = {},
                        std::vector<rmb::TraceEntry>* trace = nullptr);
+// The same, with the voxel rule tables (verified like everything else).
+RmbContents decode_rmb_contents(std::string_view bytes, const RmbDecodeOptions& options = {},
+                                std::vector<rmb::TraceEntry>* trace = nullptr);
+
+// The file as a plain (uncompressed) image: the bytes themselves, or for a zstd file (flag bit
+// 1) the header with that bit cleared, the decompressed table and sections, and the CRC-32.
+// Checks the header and the checksum first. Dumps list the image.
+std::string rmb_uncompressed(std::string_view bytes, const RmbDecodeOptions& options = {});
 
 // The annotated listing of `ramus dump`: one line per field, "offset  bytes  field  value".
 std::string format_rmb_trace(std::string_view bytes, const std::vector<rmb::TraceEntry>& trace);

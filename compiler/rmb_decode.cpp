@@ -6,6 +6,7 @@
 
 #include "compiler/rmb_codec.h"
 #include "compiler/rmb_verify.h"
+#include "compiler/rmb_zstd.h"
 
 namespace ramus {
 
@@ -25,9 +26,29 @@ struct Decoder {
   ir::Grammar g;                     // starts with the 16 turtle symbols
   std::vector<std::size_t> code_at;  // byte offset of each code record, for error messages
 
-  Reader section(std::size_t b, std::size_t e) { return Reader(bytes, b, e, trace); }
+  bool quantized = false;  // flag bit 0: reals are multiples of 2^exponent
+  int exponent = 0;
+  bool stripped = false;  // flag bit 2: no location indices, no production texts
+  std::vector<RmbVoxelTable> voxels;
+
+  Reader section(std::size_t b, std::size_t e) {
+    Reader r(bytes, b, e, trace);
+    if (quantized && exponent_known) r.quantize(exponent);
+    return r;
+  }
+  bool exponent_known = false;
 
   void meta(Reader& r) {
+    if (quantized) {  // the quantum 2^e of every real in the file, first in the meta section
+      const std::size_t at = r.pos();
+      const std::int64_t e = r.svarint("quantum exponent");
+      if (e < rmb::kMinQuantumExponent || e > rmb::kMaxQuantumExponent) {
+        r.fail_at(at, "expected a quantum exponent in -60..20");
+      }
+      exponent = int(e);
+      exponent_known = true;
+      r.quantize(exponent);
+    }
     g.name = r.str("name", kMaxString);
     const std::uint8_t sel = r.u8("selection");
     if (sel > std::uint8_t(ir::Selection::Nearest)) r.fail("expected selection 0 or 1");
@@ -37,14 +58,14 @@ struct Decoder {
     if (derive < 0 || derive > 1'000'000) r.fail("expected derive in 0..1000000");
     s.derive = int(derive);
     s.seed = r.varint("seed");
-    s.angle = r.f64("angle");
-    s.step = r.f64("step");
-    s.width = r.f64("width");
-    s.width_decay = r.f64("width_decay");
-    s.tropism[0] = r.f64("tropism.x");
-    s.tropism[1] = r.f64("tropism.y");
-    s.tropism[2] = r.f64("tropism.z");
-    s.elasticity = r.f64("elasticity");
+    s.angle = r.real("angle");
+    s.step = r.real("step");
+    s.width = r.real("width");
+    s.width_decay = r.real("width_decay");
+    s.tropism[0] = r.real("tropism.x");
+    s.tropism[1] = r.real("tropism.y");
+    s.tropism[2] = r.real("tropism.z");
+    s.elasticity = r.real("elasticity");
     const std::int64_t depth = r.svarint("max_depth");
     if (depth < 0 || depth > 255) r.fail("expected max_depth in 0..255");
     s.max_depth = int(depth);
@@ -80,12 +101,12 @@ struct Decoder {
   }
 
   void constants(Reader& r) {
-    const std::size_t n = r.count("constants", kMaxFile, 10);
+    const std::size_t n = r.count("constants", kMaxFile, quantized ? 3 : 10);
     for (std::size_t i = 0; i < n; ++i) {
       r.heading("constant " + std::to_string(i));
       ir::Constant c;
       c.name = r.str("name", 4096);
-      c.value = r.f64("value");
+      c.value = r.real("value");
       const std::uint8_t p = r.u8("is_param");
       if (p > 1) r.fail("expected is_param 0 or 1");
       c.is_param = p == 1;
@@ -94,7 +115,7 @@ struct Decoder {
   }
 
   void locations(Reader& r) {
-    const std::size_t n = r.count("locations", kMaxFile, 2);
+    const std::size_t n = r.count("locations", stripped ? 0 : kMaxFile, 2);
     g.locations.reserve(n);
     for (std::size_t i = 0; i < n; ++i) {  // front-coded: a prefix of the previous, then a suffix
       const std::size_t keep = r.bounded("shared prefix", i == 0 ? 0 : g.locations.back().size());
@@ -107,9 +128,9 @@ struct Decoder {
   }
 
   void bytecode(Reader& r) {
-    const std::size_t nc = r.count("constant pool size", kMaxFile, 8);
+    const std::size_t nc = r.count("constant pool size", kMaxFile, quantized ? 1 : 8);
     g.consts.reserve(nc);
-    for (std::size_t i = 0; i < nc; ++i) g.consts.push_back(r.f64("const"));
+    for (std::size_t i = 0; i < nc; ++i) g.consts.push_back(r.real("const"));
     const std::size_t ni = r.count("instructions", kMaxFile);
     g.code.reserve(ni);
     for (std::size_t i = 0; i < ni; ++i) {
@@ -126,7 +147,7 @@ struct Decoder {
   }
 
   void codes(Reader& r) {
-    const std::size_t n = r.count("codes", kMaxFile, 5);
+    const std::size_t n = r.count("codes", kMaxFile, stripped ? 4 : 5);  // no `where`
     std::int64_t prev_end = 0;
     for (std::size_t i = 0; i < n; ++i) {
       r.heading("code " + std::to_string(i));
@@ -147,7 +168,7 @@ struct Decoder {
       c.shape = ir::Code::Shape(flags & 3);
       c.random = flags & 4;
       using Shape = ir::Code::Shape;
-      if (c.shape == Shape::Constant || c.shape == Shape::ParamOpConst) c.value = r.f64("value");
+      if (c.shape == Shape::Constant || c.shape == Shape::ParamOpConst) c.value = r.real("value");
       if (c.shape == Shape::Param || c.shape == Shape::ParamOpConst) {
         c.slot = std::uint32_t(r.bounded("slot", ir::kMaxSlots - 1));
       }
@@ -158,7 +179,7 @@ struct Decoder {
         }
         c.op = ir::Op(op);
       }
-      c.where = location(r);
+      if (!stripped) c.where = location(r);
       g.codes.push_back(c);
     }
   }
@@ -207,7 +228,7 @@ struct Decoder {
   }
 
   void productions(Reader& r) {
-    const std::size_t n = r.count("productions", kMaxFile, 10);
+    const std::size_t n = r.count("productions", kMaxFile, stripped ? 8 : 10);
     for (std::size_t i = 0; i < n; ++i) {
       r.heading("production " + std::to_string(i));
       ir::Production p;
@@ -219,8 +240,17 @@ struct Decoder {
       patterns(r, "right context", p.right);
       p.guard = optional_code(r, "guard + 1 (0: none)");
       p.nslots = std::uint16_t(r.bounded("nslots", ir::kMaxSlots));
-      p.where = location(r);
-      p.text = r.str("text", kMaxString);
+      if (stripped) {
+        p.text = "#" + std::to_string(i);
+      } else {
+        p.where = location(r);
+        p.text = r.str("text", kMaxString);
+      }
+      if (g.selection == ir::Selection::Nearest) {  // rule-space key and query
+        const std::size_t nk = r.count("key coordinates", kMaxFile, 2);
+        for (std::size_t k = 0; k < nk; ++k) p.key.push_back(r.real("key"));
+        for (std::size_t k = 0; k < nk; ++k) p.query.push_back(code_id(r, "query code"));
+      }
       const std::size_t na = r.count("alternatives", kMaxFile, 2);
       p.alt_begin = std::uint32_t(g.alternatives.size());
       for (std::size_t a = 0; a < na; ++a) {
@@ -240,6 +270,35 @@ struct Decoder {
 
   void axiom(Reader& r) { modules(r, g.axiom, ir::kMaxSlots); }
 
+  // A stripped file's stand-in locations (rmb_stripped_location): "production i" for each
+  // production and every expression it holds first, "axiom" for the rest.
+  void name_stripped_locations() {
+    const auto n = std::uint32_t(g.productions.size());
+    for (std::uint32_t i = 0; i < n; ++i) g.locations.push_back(rmb_stripped_location(i));
+    g.locations.emplace_back(kRmbStrippedAxiomLocation);
+    std::vector<bool> named(g.codes.size(), false);
+    for (ir::Code& c : g.codes) c.where = n;
+    auto name = [&](ir::CodeId c, std::uint32_t i) {
+      if (c == ir::kNoCode || named[c]) return;
+      named[c] = true;
+      g.codes[c].where = i;
+    };
+    for (std::uint32_t i = 0; i < n; ++i) {
+      ir::Production& p = g.productions[i];
+      p.where = i;
+      name(p.guard, i);
+      for (ir::CodeId c : p.query) name(c, i);
+      for (std::uint32_t a = p.alt_begin; a < p.alt_end; ++a) {
+        const ir::Alternative& alt = g.alternatives[a];
+        name(alt.probability, i);
+        for (std::uint32_t m = alt.succ_begin; m < alt.succ_end; ++m) {
+          const ir::SuccModule& mod = g.successors[m];
+          for (std::uint32_t k = 0; k < mod.nargs; ++k) name(g.args[mod.arg_begin + k], i);
+        }
+      }
+    }
+  }
+
   void ignored(Reader& r) {
     const std::size_t n = r.count("ignored symbols", g.symbols.size());
     std::uint64_t next = 0;  // the smallest id the next entry may name
@@ -248,6 +307,54 @@ struct Decoder {
       g.ignored[id] = 1;
       next = id + 1;
       if (i + 1 < n && next >= g.symbols.size()) r.fail("expected no more ignored symbols");
+    }
+  }
+
+  // Section 11: the voxel rule tables of `voxels` blocks.
+  void voxel_rules(Reader& r) {
+    const std::size_t n = r.count("voxel tables", kMaxFile, 3);
+    for (std::size_t i = 0; i < n; ++i) {
+      r.heading("voxels " + std::to_string(i));
+      RmbVoxelTable t;
+      const std::size_t name_at = r.pos();
+      t.name = r.str("name", 4096);
+      if (t.name.empty()) r.fail_at(name_at, "expected a non-empty voxels block name");
+      const std::uint8_t present = r.u8("settings present");
+      if (present > 15) r.fail_at(r.pos() - 1, "expected settings bits <= 15");
+      if (present & 1) {
+        const std::size_t at = r.pos();
+        const std::uint64_t v = r.varint("levels");
+        if (v < 1 || v > 64) r.fail_at(at, "expected levels in 1..64");
+        t.levels = std::uint32_t(v);
+      }
+      if (present & 2) {
+        const std::size_t at = r.pos();
+        const std::uint64_t v = r.varint("classes");
+        if (v < 1 || v > 256) r.fail_at(at, "expected classes in 1..256");
+        t.classes = std::uint32_t(v);
+      }
+      if (present & 4) t.seed = r.bounded("seed", std::uint64_t(1) << 53);  // a .ramus number
+      if (present & 8) t.axiom = r.str("axiom", 4096);
+      const std::uint32_t limit = t.classes.value_or(256);
+      const std::size_t rules = r.count("rules", kMaxFile, 10);  // 9 class bytes and a weight
+      t.rules.reserve(rules);
+      for (std::size_t k = 0; k < rules; ++k) {
+        r.heading("rule " + std::to_string(k));
+        wavelet::VoxelRule rule;
+        auto cls = [&](const char* field) {
+          const std::uint8_t c = r.u8(field);
+          if (c >= limit) {
+            r.fail_at(r.pos() - 1, "expected a class below " + std::to_string(limit) + ", found " +
+                                       std::to_string(c));
+          }
+          return c;
+        };
+        rule.parent = cls("parent");
+        for (std::uint8_t& c : rule.children) c = cls("child");
+        rule.count = std::uint32_t(r.bounded("weight (0: none)", 0xFFFFFFFFu));
+        t.rules.push_back(rule);
+      }
+      voxels.push_back(std::move(t));
     }
   }
 
@@ -271,6 +378,8 @@ struct Decoder {
         return axiom(r);
       case RmbSection::Ignored:
         return ignored(r);
+      case RmbSection::VoxelRules:
+        return voxel_rules(r);
       default:
         r.fail("expected a known section");
     }
@@ -278,12 +387,13 @@ struct Decoder {
 };
 
 const char* section_name(std::size_t id) {
-  static const char* kNames[] = {"?",        "meta",  "symbols",     "constants", "locations",
-                                 "bytecode", "codes", "productions", "axiom",     "ignored"};
+  static const char* kNames[] = {"?",         "meta",     "symbols",    "constants",
+                                 "locations", "bytecode", "codes",      "productions",
+                                 "axiom",     "ignored",  "piece sets", "voxel rule tables"};
   return id < std::size(kNames) ? kNames[id] : "reserved";
 }
 
-void check_header(Reader& r, std::string_view bytes, const RmbDecodeOptions& options) {
+std::uint16_t check_header(Reader& r, std::string_view bytes, const RmbDecodeOptions& options) {
   if (bytes.size() > kMaxFile) r.fail("expected a file of at most 64 MiB");
   if (r.raw("magic", 4) != std::string_view("RMB\x1a", 4))
     r.fail_at(0, "expected magic \"RMB\\x1a\"");
@@ -291,8 +401,10 @@ void check_header(Reader& r, std::string_view bytes, const RmbDecodeOptions& opt
   if (version != kRmbVersion)
     r.fail_at(4, "expected format version 1, found " + std::to_string(version));
   const std::uint16_t flags = r.u16("flags");
-  if (flags != 0)
-    r.fail_at(6, "expected flags 0 (quantization and compression are not defined in version 1)");
+  if (flags & ~kRmbKnownFlags) {
+    r.fail_at(6, "expected flags with only bits 0 (quantized), 1 (zstd) and 2 (stripped), found " +
+                     std::to_string(flags));
+  }
   if (bytes.size() < kHeader + kTrailer) r.fail_at(bytes.size(), "expected at least 12 bytes");
   Reader tail(bytes, bytes.size() - kTrailer, bytes.size(), nullptr);
   const std::uint32_t stored = tail.u32("crc32");
@@ -301,26 +413,61 @@ void check_header(Reader& r, std::string_view bytes, const RmbDecodeOptions& opt
     r.fail_at(bytes.size() - kTrailer, "expected CRC-32 " + std::to_string(actual) + ", found " +
                                            std::to_string(stored) + " (the file is corrupted)");
   }
+  return flags;
 }
 
 }  // namespace
 
+std::string rmb_uncompressed(std::string_view bytes, const RmbDecodeOptions& options) {
+  const std::size_t body_end = bytes.size() >= kTrailer ? bytes.size() - kTrailer : 0;
+  Reader r(bytes, 0, body_end, nullptr);
+  const std::uint16_t flags = check_header(r, bytes, options);
+  if (!(flags & kRmbZstd)) return std::string(bytes);
+  // The image: the header with the zstd bit cleared, the frame's content, the stored CRC-32
+  // (already checked over the compressed file). Offsets inside it are those of the image.
+  std::string image(bytes.substr(0, kHeader));
+  const std::uint16_t plain = flags & ~kRmbZstd;
+  image[6] = char(plain & 0xFF);
+  image[7] = char(plain >> 8);
+  image += rmb_zstd_decompress(bytes.substr(kHeader, body_end - kHeader), kHeader,
+                               kMaxFile - kHeader - kTrailer);
+  image += bytes.substr(body_end);
+  return image;
+}
+
 ir::Grammar decode_rmb(std::string_view bytes, const RmbDecodeOptions& options,
                        std::vector<rmb::TraceEntry>* trace) {
+  return decode_rmb_contents(bytes, options, trace).grammar;
+}
+
+RmbContents decode_rmb_contents(std::string_view bytes, const RmbDecodeOptions& options,
+                                std::vector<rmb::TraceEntry>* trace) {
+  if (bytes.size() >= kHeader && (std::uint8_t(bytes[6]) & kRmbZstd)) {
+    const std::string image = rmb_uncompressed(bytes, options);
+    RmbDecodeOptions inner = options;
+    inner.verify_checksum = false;  // checked over the compressed file
+    return decode_rmb_contents(image, inner, trace);
+  }
   Decoder d{bytes, trace, ir::make_grammar(""), {}};  // the turtle symbols are implied
   const std::size_t body_end = bytes.size() >= kTrailer ? bytes.size() - kTrailer : 0;
   Reader r(bytes, 0, body_end, trace);
   r.heading("header");
-  check_header(r, bytes, options);
+  const std::uint16_t flags = check_header(r, bytes, options);
+  d.quantized = flags & kRmbQuantized;
+  d.stripped = flags & kRmbStripped;
+  const std::size_t count_at = r.pos();
   const std::size_t n = r.count("section count", 255, 3);
-  if (n != kSectionCount) r.fail("expected 9 sections, found " + std::to_string(n));
+  if (n != kSectionCount && n != kSectionCount + 1) {  // the voxel rule tables are optional
+    r.fail_at(count_at, "expected 9 or 10 sections, found " + std::to_string(n));
+  }
   std::size_t expect_at = 0;  // sections are contiguous, right after the table
   std::vector<std::pair<std::size_t, std::size_t>> ranges;
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t at = r.pos();
     const std::uint64_t id = r.varint("section id");
-    if (id != i + 1)
-      r.fail_at(at, "expected section id " + std::to_string(i + 1) + " (" + section_name(i + 1) +
+    const std::size_t want = i < kSectionCount ? i + 1 : std::size_t(RmbSection::VoxelRules);
+    if (id != want)
+      r.fail_at(at, "expected section id " + std::to_string(want) + " (" + section_name(want) +
                         "), found " + std::to_string(id));
     const std::uint64_t off = r.varint("offset");
     const std::uint64_t len = r.bounded("length", body_end);
@@ -334,9 +481,10 @@ ir::Grammar decode_rmb(std::string_view bytes, const RmbDecodeOptions& options,
   if (expect_at != body_end)
     r.fail_at(expect_at, "expected the CRC-32 right after the last section");
   for (std::size_t i = 0; i < n; ++i) {
+    const std::size_t id = i < kSectionCount ? i + 1 : std::size_t(RmbSection::VoxelRules);
     Reader s = d.section(ranges[i].first, ranges[i].second);
-    s.heading(std::string("section ") + std::to_string(i + 1) + ": " + section_name(i + 1));
-    d.run_section(RmbSection(i + 1), s);
+    s.heading(std::string("section ") + std::to_string(id) + ": " + section_name(id));
+    d.run_section(RmbSection(id), s);
     if (!s.at_end())
       s.fail("expected the end of the section, found " + std::to_string(s.left()) +
              " more byte(s)");
@@ -347,8 +495,9 @@ ir::Grammar decode_rmb(std::string_view bytes, const RmbDecodeOptions& options,
     tail.u32("crc32");
   }
   verify_rmb_codes(d.g, d.code_at);
+  if (d.stripped) d.name_stripped_locations();
   d.g.build_tables();
-  return std::move(d.g);
+  return RmbContents{std::move(d.g), std::move(d.voxels)};
 }
 
 std::string format_rmb_trace(std::string_view bytes, const std::vector<rmb::TraceEntry>& trace) {
@@ -367,6 +516,10 @@ std::string format_rmb_trace(std::string_view bytes, const std::vector<rmb::Trac
     out += buf + hex + "  " + field + "  " + e.value + "\n";
   }
   return out;
+}
+
+std::string rmb_stripped_location(std::size_t production) {
+  return "production " + std::to_string(production);
 }
 
 }  // namespace ramus

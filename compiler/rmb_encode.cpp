@@ -1,10 +1,13 @@
 // Encoder of the .rmb format (docs/binary-format.md). Each section is written into its own
 // buffer; the section table, whose varint offsets depend on its own length, is then sized by
 // iterating to a fixed point, and the CRC-32 of everything closes the file.
+#include <algorithm>
+#include <cmath>
 #include <utility>
 
 #include "compiler/rmb_codec.h"
 #include "compiler/rmb_verify.h"
+#include "compiler/rmb_zstd.h"
 
 namespace ramus {
 
@@ -24,7 +27,7 @@ void write_meta(Writer& w, const ir::Grammar& g) {
   w.varint(s.seed);
   for (double v : {s.angle, s.step, s.width, s.width_decay, s.tropism[0], s.tropism[1],
                    s.tropism[2], s.elasticity}) {
-    w.f64(v);
+    w.real(v);
   }
   w.svarint(s.max_depth);
 }
@@ -43,13 +46,18 @@ void write_constants(Writer& w, const ir::Grammar& g) {
   w.varint(g.constants.size());
   for (const ir::Constant& c : g.constants) {
     w.str(c.name);
-    w.f64(c.value);
+    w.real(c.value);
     w.u8(c.is_param ? 1 : 0);
   }
 }
 
 // Front coding: each location shares most of its "file:line:" with the one before.
-void write_locations(Writer& w, const ir::Grammar& g) {
+// A stripped file (flag bit 2) leaves out every location index and production text.
+void write_locations(Writer& w, const ir::Grammar& g, bool stripped) {
+  if (stripped) {  // the section stays, empty: the layout of every file is the same
+    w.varint(0);
+    return;
+  }
   w.varint(g.locations.size());
   std::string_view prev;
   for (const std::string& s : g.locations) {
@@ -63,7 +71,7 @@ void write_locations(Writer& w, const ir::Grammar& g) {
 
 void write_bytecode(Writer& w, const ir::Grammar& g) {
   w.varint(g.consts.size());
-  for (double v : g.consts) w.f64(v);
+  for (double v : g.consts) w.real(v);
   w.varint(g.code.size());
   for (const ir::Instr& in : g.code) {
     w.u8(std::uint8_t(in.op));
@@ -71,7 +79,7 @@ void write_bytecode(Writer& w, const ir::Grammar& g) {
   }
 }
 
-void write_codes(Writer& w, const ir::Grammar& g) {
+void write_codes(Writer& w, const ir::Grammar& g, bool stripped) {
   w.varint(g.codes.size());
   std::uint32_t prev_end = 0;
   for (const ir::Code& c : g.codes) {
@@ -82,10 +90,10 @@ void write_codes(Writer& w, const ir::Grammar& g) {
     w.varint(c.max_stack);
     w.u8(std::uint8_t(std::uint8_t(c.shape) | (c.random ? 4 : 0)));
     using Shape = ir::Code::Shape;
-    if (c.shape == Shape::Constant || c.shape == Shape::ParamOpConst) w.f64(c.value);
+    if (c.shape == Shape::Constant || c.shape == Shape::ParamOpConst) w.real(c.value);
     if (c.shape == Shape::Param || c.shape == Shape::ParamOpConst) w.varint(c.slot);
     if (c.shape == Shape::ParamOpConst) w.u8(std::uint8_t(c.op));
-    w.varint(c.where);
+    if (!stripped) w.varint(c.where);
   }
 }
 
@@ -115,7 +123,7 @@ void write_modules(Writer& w, const ir::Grammar& g, std::uint32_t b, std::uint32
 
 std::uint64_t optional_code(ir::CodeId c) { return c == ir::kNoCode ? 0 : std::uint64_t(c) + 1; }
 
-void write_productions(Writer& w, const ir::Grammar& g) {
+void write_productions(Writer& w, const ir::Grammar& g, bool stripped) {
   w.varint(g.productions.size());
   for (const ir::Production& p : g.productions) {
     w.u8(std::uint8_t(p.kind));
@@ -124,8 +132,17 @@ void write_productions(Writer& w, const ir::Grammar& g) {
     write_patterns(w, p.right);
     w.varint(optional_code(p.guard));
     w.varint(p.nslots);
-    w.varint(p.where);
-    w.str(p.text);
+    if (!stripped) {
+      w.varint(p.where);
+      w.str(p.text);
+    }
+    if (g.selection ==
+        ir::Selection::Nearest) {  // rule-space key and query (docs/binary-format.md)
+      check(p.key.size() == p.query.size(), "a rule-space key without its query");
+      w.varint(p.key.size());
+      for (double k : p.key) w.real(k);
+      for (ir::CodeId c : p.query) w.varint(c);
+    }
     check(p.alt_begin <= p.alt_end && p.alt_end <= g.alternatives.size(),
           "an alternative range outside its array");
     w.varint(p.alt_end - p.alt_begin);
@@ -150,6 +167,33 @@ void write_ignored(Writer& w, const ir::Grammar& g) {
   }
 }
 
+// Section 11 (docs/binary-format.md, voxel rule tables).
+void write_voxels(Writer& w, const std::vector<RmbVoxelTable>& tables) {
+  w.varint(tables.size());
+  for (const RmbVoxelTable& t : tables) {
+    check(!t.levels || (*t.levels >= 1 && *t.levels <= 64), "voxel levels outside 1..64");
+    check(!t.classes || (*t.classes >= 1 && *t.classes <= 256), "voxel classes outside 1..256");
+    w.str(t.name);
+    w.u8(std::uint8_t((t.levels ? 1 : 0) | (t.classes ? 2 : 0) | (t.seed ? 4 : 0) |
+                      (t.axiom ? 8 : 0)));
+    if (t.levels) w.varint(*t.levels);
+    if (t.classes) w.varint(*t.classes);
+    if (t.seed) w.varint(*t.seed);
+    if (t.axiom) w.str(*t.axiom);
+    w.varint(t.rules.size());
+    for (const wavelet::VoxelRule& r : t.rules) {
+      const std::uint32_t limit = t.classes.value_or(256);
+      check(r.parent < limit, "a voxel class outside the block's classes");
+      w.u8(r.parent);
+      for (std::uint8_t c : r.children) {
+        check(c < limit, "a voxel class outside the block's classes");
+        w.u8(c);
+      }
+      w.varint(r.count);
+    }
+  }
+}
+
 std::size_t varint_size(std::uint64_t v) {
   std::size_t n = 1;
   while (v >= 0x80) {
@@ -161,24 +205,50 @@ std::size_t varint_size(std::uint64_t v) {
 
 }  // namespace
 
-std::string encode_rmb(const ir::Grammar& g) {
+int rmb_quantum_exponent(double tolerance) {
+  if (!(tolerance > 0) || !std::isfinite(tolerance)) {
+    throw RmbError(0, "cannot encode: expected a tolerance that is a positive number");
+  }
+  const int e = int(std::floor(std::log2(2 * tolerance)));
+  return std::clamp(e, rmb::kMinQuantumExponent, rmb::kMaxQuantumExponent);
+}
+
+std::string encode_rmb(const ir::Grammar& g, const RmbEncodeOptions& options) {
+  return encode_rmb(g, {}, options);
+}
+
+std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& voxels,
+                       const RmbEncodeOptions& options) {
+  std::optional<int> exponent;
+  if (options.tolerance) exponent = rmb_quantum_exponent(*options.tolerance);
   std::vector<std::pair<RmbSection, std::string>> sections;
-  auto add = [&](RmbSection id, void (*fill)(Writer&, const ir::Grammar&)) {
+  const bool strip = options.strip;
+  auto add = [&](RmbSection id, auto fill) {
     Writer w;
+    if (exponent) {
+      if (id == RmbSection::Meta) w.svarint(*exponent);  // the quantum, before everything else
+      w.quantize(*exponent);
+    }
     fill(w, g);
     sections.emplace_back(id, std::move(w.data()));
   };
   add(RmbSection::Meta, write_meta);
   add(RmbSection::Symbols, write_symbols);
   add(RmbSection::Constants, write_constants);
-  add(RmbSection::Locations, write_locations);
+  add(RmbSection::Locations,
+      [strip](Writer& w, const ir::Grammar& gr) { write_locations(w, gr, strip); });
   add(RmbSection::Bytecode, write_bytecode);
-  add(RmbSection::Codes, write_codes);
-  add(RmbSection::Productions, write_productions);
+  add(RmbSection::Codes, [strip](Writer& w, const ir::Grammar& gr) { write_codes(w, gr, strip); });
+  add(RmbSection::Productions,
+      [strip](Writer& w, const ir::Grammar& gr) { write_productions(w, gr, strip); });
   add(RmbSection::Axiom, [](Writer& w, const ir::Grammar& gr) {
     write_modules(w, gr, 0, std::uint32_t(gr.axiom.size()), gr.axiom);
   });
   add(RmbSection::Ignored, write_ignored);
+  if (!voxels.empty()) {
+    add(RmbSection::VoxelRules,
+        [&voxels](Writer& w, const ir::Grammar&) { write_voxels(w, voxels); });
+  }
 
   // Header: magic, version, flags, then the table. The table's size depends on the offsets it
   // holds, which depend on its size: grow the guess until it stops changing.
@@ -197,7 +267,9 @@ std::string encode_rmb(const ir::Grammar& g) {
   Writer w;
   w.bytes(std::string_view("RMB\x1a", 4));
   w.u16(kRmbVersion);
-  w.u16(0);  // flags: no quantization, no compression
+  const std::uint16_t flags =
+      std::uint16_t((exponent ? kRmbQuantized : 0) | (options.strip ? kRmbStripped : 0));
+  w.u16(flags);
   w.varint(sections.size());
   std::size_t at = kFixed + table;
   for (const auto& [id, body] : sections) {
@@ -207,6 +279,15 @@ std::string encode_rmb(const ir::Grammar& g) {
     at += body.size();
   }
   for (const auto& [id, body] : sections) w.bytes(body);
+  if (options.zstd) {  // flag bit 1: the table and the sections as one zstd frame
+    const std::string frame = rmb_zstd_compress(std::string_view(w.data()).substr(kFixed));
+    Writer z;
+    z.bytes(std::string_view(w.data()).substr(0, 6));
+    z.u16(flags | kRmbZstd);
+    z.bytes(frame);
+    z.u32(rmb::crc32(z.data()));
+    return std::move(z.data());
+  }
   w.u32(rmb::crc32(w.data()));
   return std::move(w.data());
 }

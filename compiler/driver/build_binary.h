@@ -2,14 +2,25 @@
 // (docs/binary-format.md) instead of grown into a mesh.
 #pragma once
 
+#include <optional>
 #include <string>
 
 #include "compiler/driver/grow_args.h"
 
 namespace ramus::cli {
 
+// The options only --target binary reads.
+struct BinaryBuildArgs {
+  std::optional<double> tolerance;  // lossy: reals within this absolute tolerance
+  bool zstd = false;                // compress the sections with zstd
+  bool strip = false;               // leave out source locations and production texts
+};
+
+void add_binary_build_options(CLI::App* sub, BinaryBuildArgs& args);
+
 // Lowers the grammar (-D, --seed, --system apply; -n sets the stored derivation length) and
 // writes its .rmb. Returns the exit code: 1 after printing the grammar's diagnostics.
-int build_binary(const GrowArgs& args, const std::string& output, bool quiet);
+int build_binary(const GrowArgs& args, const BinaryBuildArgs& binary, const std::string& output,
+                 bool quiet);
 
 }  // namespace ramus::cli

@@ -24,17 +24,31 @@ std::string read_binary(const std::string& path) {
 }
 
 int run_dump(const std::string& path) {
-  const std::string bytes = read_binary(path);
-  std::vector<rmb::TraceEntry> trace;
+  const std::string file = read_binary(path);
+  std::string bytes;  // what the listing shows: the file, or a zstd file's plain image
   try {
-    decode_rmb(bytes, RmbDecodeOptions{}, &trace);
+    bytes = rmb_uncompressed(file);
+  } catch (const RmbError& e) {
+    throw UserError(path + ": " + e.what());
+  }
+  if (bytes.size() != file.size() || bytes != file) {
+    std::printf(
+        "-- zstd: the %zu bytes after the header decompress to %zu; the listing is of "
+        "that plain image\n",
+        file.size() - 12, bytes.size() - 12);
+  }
+  std::vector<rmb::TraceEntry> trace;
+  RmbDecodeOptions options;
+  options.verify_checksum = bytes == file;  // an image's CRC-32 was checked over the file
+  try {
+    decode_rmb(bytes, options, &trace);
   } catch (const RmbError& e) {
     std::fputs(format_rmb_trace(bytes, trace).c_str(), stdout);
     std::fflush(stdout);
     throw UserError(path + ": " + e.what());
   }
   std::fputs(format_rmb_trace(bytes, trace).c_str(), stdout);
-  std::printf("%zu bytes\n", bytes.size());
+  std::printf("%zu bytes\n", file.size());
   return 0;
 }
 

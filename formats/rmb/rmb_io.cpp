@@ -2,6 +2,7 @@
 
 #include <array>
 #include <bit>
+#include <cmath>
 #include <cstring>
 
 #include "core/number_text.h"
@@ -65,6 +66,18 @@ void Writer::varint(std::uint64_t v) {
     v >>= 7;
   }
   u8(std::uint8_t(v));
+}
+
+void Writer::real(double v) {
+  if (quantized_ && std::isfinite(v)) {
+    const double k = std::nearbyint(std::ldexp(v, -exponent_));
+    if (std::fabs(k) <= double(kMaxQuantumMultiple)) {
+      varint(zigzag(std::int64_t(k)) << 1);
+      return;
+    }
+  }
+  if (quantized_) varint(1);  // the escape: an exact f64 follows
+  f64(v);
 }
 
 void Writer::f64(double v) {
@@ -147,6 +160,31 @@ double Reader::f64(const char* field) {
   for (int i = 0; i < 8; ++i) bits |= std::uint64_t(std::uint8_t(data_[pos_++])) << (8 * i);
   const double v = std::bit_cast<double>(bits);
   if (trace_) note(at, field, number(v));
+  return v;
+}
+
+double Reader::real(const char* field) {
+  if (!quantized_) return f64(field);
+  const std::size_t at = pos_;
+  std::vector<TraceEntry>* trace = trace_;
+  trace_ = nullptr;  // one trace line for the whole number, below
+  const std::uint64_t u = varint(field);
+  double v = 0;
+  if (u == 1) {
+    v = f64(field);
+  } else if (u & 1) {
+    trace_ = trace;
+    fail_at(at, "expected a quantized number (even) or the escape 1");
+  } else {
+    const std::int64_t k = unzigzag(u >> 1);
+    if (k > kMaxQuantumMultiple || k < -kMaxQuantumMultiple) {
+      trace_ = trace;
+      fail_at(at, "expected a quantized multiple of at most 2^52");
+    }
+    v = std::ldexp(double(k), exponent_);
+  }
+  trace_ = trace;
+  if (trace_) note(at, field, number(v) + (u == 1 ? " (exact)" : ""));
   return v;
 }
 

@@ -46,8 +46,19 @@ class Writer {
   std::size_t size() const { return out_.size(); }
   std::string& data() { return out_; }
 
+  // A real number (docs/binary-format.md, `real`): an f64, or once quantize(e) was called, the
+  // nearest multiple k * 2^e as varint(zigzag(k) << 1), with varint 1 then f64 as the escape
+  // for values too large or not finite. The error is at most 2^(e-1).
+  void quantize(int exponent) {
+    quantized_ = true;
+    exponent_ = exponent;
+  }
+  void real(double v);
+
  private:
   std::string out_;
+  bool quantized_ = false;
+  int exponent_ = 0;
 };
 
 // One line of a dump: bytes [offset, offset + size) hold `field` = `value`; size 0 marks a
@@ -73,6 +84,12 @@ class Reader {
   double f64(const char* field);
   std::string str(const char* field, std::size_t max_len);
   std::string_view raw(const char* field, std::size_t n);  // n bytes, traced as text
+  // A real number as Writer::real writes it (f64 unless quantize(e) was called).
+  void quantize(int exponent) {
+    quantized_ = true;
+    exponent_ = exponent;
+  }
+  double real(const char* field);
 
   // A varint that must be <= max (counts, ids, indices): "expected <what> <= max".
   std::uint64_t bounded(const char* field, std::uint64_t max);
@@ -99,7 +116,14 @@ class Reader {
   std::string_view data_;
   std::size_t pos_, end_;
   std::vector<TraceEntry>* trace_;
+  bool quantized_ = false;
+  int exponent_ = 0;
 };
+
+// Quantum exponents a file may declare: 2^-60 .. 2^20.
+inline constexpr int kMinQuantumExponent = -60, kMaxQuantumExponent = 20;
+// The largest |k| of a quantized real (so that zigzag(k) << 1 fits 64 bits and k is exact).
+inline constexpr std::int64_t kMaxQuantumMultiple = std::int64_t(1) << 52;
 
 // "52 4d 42 1a" for a dump; at most `max` bytes, then "..".
 std::string hex_bytes(std::string_view bytes, std::size_t max);

@@ -3,6 +3,8 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -14,13 +16,19 @@
 
 namespace ramus::test {
 
-// Every .ramus under examples/, sorted, relative to the source tree.
+// Every .ramus under examples/ that holds an lsystem block (what an .rmb carries; examples of
+// pieces alone have none), sorted, relative to the source tree.
 inline std::vector<std::string> example_grammars() {
   namespace fs = std::filesystem;
   std::vector<std::string> out;
   const fs::path root = fs::path(RAMUS_SOURCE_DIR);
   for (const auto& e : fs::recursive_directory_iterator(root / "examples")) {
-    if (e.path().extension() == ".ramus") out.push_back(fs::relative(e.path(), root).string());
+    if (e.path().extension() != ".ramus") continue;
+    std::ifstream in(e.path());
+    std::stringstream text;
+    text << in.rdbuf();
+    if (text.str().find("lsystem ") == std::string::npos) continue;
+    out.push_back(fs::relative(e.path(), root).string());
   }
   std::sort(out.begin(), out.end());
   return out;

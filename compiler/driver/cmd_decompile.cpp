@@ -1,0 +1,66 @@
+// ramus decompile FILE.rmb [-o FILE.ramus]
+// Turns a binary grammar back into .ramus text (docs/binary-format.md, Decompiling): verified
+// first like every .rmb, then rebuilt by compiler/rmb_decompile.h. The text is in the canonical
+// layout (`ramus fmt` leaves it unchanged) and derives the same string for the same seed.
+// Without -o it goes to stdout.
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+
+#include "compiler/driver/command.h"
+#include "compiler/rmb_codec.h"
+#include "compiler/rmb_decompile.h"
+#include "core/atomic_file.h"
+
+namespace ramus::cli {
+
+namespace {
+
+struct DecompileArgs {
+  std::string file;
+  std::string output;
+};
+
+std::string read_binary(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw UserError("cannot open " + path);
+  std::ostringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+int run_decompile(const DecompileArgs& a, bool quiet) {
+  const std::string bytes = read_binary(a.file);
+  std::string text;
+  try {
+    text = decompile(decode_rmb_contents(bytes));
+  } catch (const RmbError& e) {
+    throw UserError(a.file + ": " + e.what());
+  } catch (const DecompileError& e) {
+    throw UserError(a.file + ": cannot decompile: " + e.what());
+  }
+  if (a.output.empty() || a.output == "-") {
+    std::fwrite(text.data(), 1, text.size(), stdout);
+    return 0;
+  }
+  write_file_atomically(a.output, text);
+  if (!quiet) std::fprintf(stderr, "ramus: wrote %s (%zu bytes)\n", a.output.c_str(), text.size());
+  return 0;
+}
+
+}  // namespace
+
+void add_decompile(CLI::App& app, const GlobalOptions& global, std::function<int()>& run) {
+  auto args = std::make_shared<DecompileArgs>();
+  CLI::App* sub =
+      app.add_subcommand("decompile", "turn a binary grammar (.rmb) back into .ramus text");
+  sub->add_option("file", args->file, "the .rmb file")->required();
+  sub->add_option("-o,--output", args->output, "the .ramus file to write (default: stdout)");
+  sub->callback([args, &global, &run] {
+    run = [args, &global] { return run_decompile(*args, global.quiet); };
+  });
+}
+
+}  // namespace ramus::cli
