@@ -6,6 +6,7 @@ packages=(
   libboost-dev libeigen3-dev libtinygltf-dev libstb-dev libopenmesh-dev libcli11-dev
   catch2 libnanoflann-dev libtbb-dev libzstd-dev
   python3 python3-numpy python3-pywt python3-scipy nodejs
+  chromium  # headless browser: three.js loads the pieces outputs (tests/pieces/browser)
 )
 missing=()
 for p in "${packages[@]}"; do
@@ -19,6 +20,11 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $sudo_cmd apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 # npm tools used by the test suite live in tools/node_modules (not committed).
-if [ -f tools/package.json ] && [ ! -d tools/node_modules ]; then
+# Installs again when a package the list names is missing (the list grew since the last install).
+npm_missing=0
+for p in gltf-validator three playwright-core; do
+  [ -d "tools/node_modules/$p" ] || npm_missing=1
+done
+if [ -f tools/package.json ] && [ "$npm_missing" -eq 1 ]; then
   (cd tools && npm install --no-audit --no-fund --silent)
 fi

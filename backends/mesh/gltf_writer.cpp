@@ -7,73 +7,24 @@
 #include <tiny_gltf.h>
 
 #include <algorithm>
-#include <cctype>
-#include <cstring>
-#include <filesystem>
 #include <limits>
 #include <sstream>
 
+#include "backends/mesh/gltf_buffer_builder.h"
+#include "backends/mesh/gltf_container.h"
 #include "backends/mesh/leaf_shape.h"
-#include "core/atomic_file.h"
 
 namespace ramus::mesh {
 namespace {
 
-class ModelBuilder {
+class ModelBuilder : public GltfBufferBuilder {
  public:
-  ModelBuilder() {
-    model_.asset.version = "2.0";
-    model_.asset.generator = "ramus";
-    model_.buffers.emplace_back();
-  }
-
-  int add_view(const void* data, std::size_t bytes, int target) {
-    auto& buf = model_.buffers[0].data;
-    while (buf.size() % 4) buf.push_back(0);
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = buf.size();
-    view.byteLength = bytes;
-    view.target = target;
-    const auto* p = static_cast<const unsigned char*>(data);
-    buf.insert(buf.end(), p, p + bytes);
-    model_.bufferViews.push_back(view);
-    return int(model_.bufferViews.size() - 1);
-  }
-
   // A float accessor over `count` elements of `comps` components each.
   template <typename T>
   int add_float_attribute(const std::vector<T>& values, int comps, int type) {
-    const float* f = reinterpret_cast<const float*>(values.data());
     static_assert(sizeof(T) % sizeof(float) == 0);
-    std::vector<double> lo(comps, std::numeric_limits<double>::infinity());
-    std::vector<double> hi(comps, -std::numeric_limits<double>::infinity());
-    for (std::size_t i = 0; i < values.size(); ++i) {
-      for (int c = 0; c < comps; ++c) {
-        lo[c] = std::min(lo[c], double(f[i * comps + c]));
-        hi[c] = std::max(hi[c], double(f[i * comps + c]));
-      }
-    }
-    const int view =
-        add_view(f, values.size() * comps * sizeof(float), TINYGLTF_TARGET_ARRAY_BUFFER);
-    return add_accessor(view, TINYGLTF_COMPONENT_TYPE_FLOAT, values.size(), type, lo, hi);
-  }
-
-  int add_indices(const std::vector<std::uint32_t>& idx, std::size_t vertex_count) {
-    const std::uint32_t hi = idx.empty() ? 0 : *std::max_element(idx.begin(), idx.end());
-    const std::uint32_t lo = idx.empty() ? 0 : *std::min_element(idx.begin(), idx.end());
-    int view;
-    int type;
-    // 16-bit indices when they fit; 65535 is the primitive-restart value and is never an index.
-    if (vertex_count < 0xffff) {
-      std::vector<std::uint16_t> small(idx.begin(), idx.end());
-      view = add_view(small.data(), small.size() * 2, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-      type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT;
-    } else {
-      view = add_view(idx.data(), idx.size() * 4, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-      type = TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT;
-    }
-    return add_accessor(view, type, idx.size(), TINYGLTF_TYPE_SCALAR, {double(lo)}, {double(hi)});
+    return add_floats(reinterpret_cast<const float*>(values.data()), values.size(), comps, type,
+                      TINYGLTF_TARGET_ARRAY_BUFFER, true);
   }
 
   int add_texture(const std::string& png, const std::string& name, int wrap) {
@@ -123,25 +74,6 @@ class ModelBuilder {
     prim.indices = add_indices(part.indices, part.vertex_count());
     return prim;
   }
-
-  tinygltf::Model& model() { return model_; }
-
- private:
-  int add_accessor(int view, int component, std::size_t count, int type, std::vector<double> lo,
-                   std::vector<double> hi) {
-    tinygltf::Accessor a;
-    a.bufferView = view;
-    a.byteOffset = 0;
-    a.componentType = component;
-    a.count = count;
-    a.type = type;
-    a.minValues = std::move(lo);
-    a.maxValues = std::move(hi);
-    model_.accessors.push_back(a);
-    return int(model_.accessors.size() - 1);
-  }
-
-  tinygltf::Model model_;
 };
 
 void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
@@ -187,30 +119,6 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
   }
 }
 
-// The JSON chunk of a GLB container.
-std::string glb_json(const std::string& glb) {
-  std::uint32_t len = 0;
-  std::memcpy(&len, glb.data() + 12, 4);
-  std::string json = glb.substr(20, len);
-  while (!json.empty() && json.back() == ' ') json.pop_back();
-  return json;
-}
-
-std::string uri_escape(const std::string& s) {
-  static const char* hex = "0123456789ABCDEF";
-  std::string out;
-  for (unsigned char c : s) {
-    if (std::isalnum(c) || c == '-' || c == '_' || c == '.' || c == '~') {
-      out += char(c);
-    } else {
-      out += '%';
-      out += hex[c >> 4];
-      out += hex[c & 15];
-    }
-  }
-  return out;
-}
-
 }  // namespace
 
 GltfBytes encode_gltf(const std::vector<TreeMesh>& lods, bool binary, const std::string& bin_uri) {
@@ -229,28 +137,17 @@ GltfBytes encode_gltf(const std::vector<TreeMesh>& lods, bool binary, const std:
     return out;
   }
   // A .gltf is the GLB's JSON with the buffer pointing at the .bin file.
-  std::string json = glb_json(glb.str());
-  const std::string key = "\"buffers\":[{";
-  const std::size_t at = json.find(key);
-  if (at == std::string::npos) throw MeshError("glTF serialization produced no buffer");
-  json.insert(at + key.size(), "\"uri\":\"" + uri_escape(bin_uri) + "\",");
-  out.main = json + "\n";
+  std::optional<std::string> json = gltf_json_with_buffer_uri(glb.str(), bin_uri);
+  if (!json) throw MeshError("glTF serialization produced no buffer");
+  out.main = std::move(*json);
   return out;
 }
 
 void write_gltf(const std::vector<TreeMesh>& lods, const std::string& path) {
-  const std::filesystem::path p(path);
-  const std::string ext = p.extension().string();
-  if (ext == ".glb") {
-    write_file_atomically(path, encode_gltf(lods, true).main);
-    return;
-  }
-  if (ext != ".gltf") throw MeshError("a glTF file name must end in .glb or .gltf: " + path);
-  std::filesystem::path bin = p;
-  bin.replace_extension(".bin");
-  const GltfBytes bytes = encode_gltf(lods, false, bin.filename().string());
-  write_file_atomically(bin.string(), bytes.bin);
-  write_file_atomically(path, bytes.main);
+  const bool written = write_gltf_files(path, [&](bool binary, const std::string& bin_uri) {
+    return encode_gltf(lods, binary, bin_uri);
+  });
+  if (!written) throw MeshError("a glTF file name must end in .glb or .gltf: " + path);
 }
 
 }  // namespace ramus::mesh

@@ -8,16 +8,13 @@
 #include <string>
 #include <vector>
 
+#include "backends/mesh/gltf_container.h"
 #include "backends/mesh/tree_mesh.h"
 
 namespace ramus::mesh {
 
 // The file's bytes: a GLB container, or (binary == false) the JSON of a .gltf whose buffer uri
 // is `bin_uri` and the .bin bytes in `bin`.
-struct GltfBytes {
-  std::string main;
-  std::string bin;
-};
 GltfBytes encode_gltf(const std::vector<TreeMesh>& lods, bool binary,
                       const std::string& bin_uri = "");
 

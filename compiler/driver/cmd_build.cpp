@@ -3,6 +3,7 @@
 //                  [--leaf-scale K]
 // Grows the grammar and writes its tree as a mesh (docs/mesh.md). glTF gets the levels of
 // detail LOD0..LOD N as separate meshes; OBJ and PLY hold one mesh, level N.
+// --target pieces writes skinned piece instances instead (build_pieces.h, docs/pieces.md).
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -11,6 +12,7 @@
 #include "backends/mesh/openmesh_writer.h"
 #include "backends/mesh/tree_mesh.h"
 #include "compiler/driver/build_binary.h"
+#include "compiler/driver/build_pieces.h"
 #include "compiler/driver/grow_args.h"
 
 namespace ramus::cli {
@@ -24,6 +26,8 @@ struct BuildArgs {
   double pipe_exponent = 0;
   std::string leaves = "quad";
   double leaf_scale = 1;
+  PiecesBuildArgs pieces;
+  BinaryBuildArgs binary;
 };
 
 std::string extension(const std::string& path) {
@@ -36,7 +40,12 @@ void print_warnings(const mesh::MeshReport& report) {
 }
 
 int run_build(const BuildArgs& a, const GlobalOptions& global) {
-  if (a.target == "binary") return build_binary(a.grow, a.output, global.quiet);
+  if (a.target == "binary") return build_binary(a.grow, a.binary, a.output, global.quiet);
+  if (a.target == "pieces") {
+    PiecesBuildArgs p = a.pieces;
+    p.lod = a.lod;
+    return build_pieces(a.grow, p, a.output, global.quiet);
+  }
   if (extension(a.output) == ".rmb") throw UserError("an .rmb output needs --target binary");
   const std::optional<Skeleton> skeleton = grow_for_cli(a.grow);
   if (!skeleton) return 1;
@@ -79,7 +88,8 @@ void add_build(CLI::App& app, const GlobalOptions& global, std::function<int()>&
   auto args = std::make_shared<BuildArgs>();
   CLI::App* sub = app.add_subcommand("build", "compile a grammar into an asset (a tree mesh)");
   add_grow_options(sub, args->grow);
-  sub->add_option("-o,--output", args->output, "output: .glb, .gltf (+ .bin), .obj (+ .mtl), .ply; .rmb with --target binary")
+  sub->add_option("-o,--output", args->output,
+                  "output: .glb, .gltf (+ .bin), .obj (+ .mtl), .ply; .rmb with --target binary")
       ->required()
       ->check(CLI::Validator(
           [](const std::string& p) -> std::string {
@@ -91,8 +101,10 @@ void add_build(CLI::App& app, const GlobalOptions& global, std::function<int()>&
           "FILE", "mesh file"));
   // The targets later back ends add (pieces, binary, voxels) join this list.
   sub->add_option("--target", args->target, "what to build (default: mesh)")
-      ->check(CLI::IsMember({"mesh", "binary"}));
-  sub->add_option("--lod", args->lod, "levels of detail: glTF gets LOD0..LOD N, OBJ/PLY level N")
+      ->check(CLI::IsMember({"mesh", "binary", "pieces"}));
+  sub->add_option("--lod", args->lod,
+                  "levels of detail: glTF gets LOD0..LOD N, OBJ/PLY level N; "
+                  "--target pieces: the tessellation level the pieces are written at")
       ->check(CLI::Range(0, 7));
   sub->add_option("--pipe-exponent", args->pipe_exponent,
                   "radii by the pipe model r^e = sum r_child^e (2 da Vinci, 2.5 Livny); "
@@ -102,6 +114,8 @@ void add_build(CLI::App& app, const GlobalOptions& global, std::function<int()>&
       ->check(CLI::IsMember({"quad", "crossed"}));
   sub->add_option("--leaf-scale", args->leaf_scale, "leaf length per unit of organ size")
       ->check(CLI::PositiveNumber);
+  add_pieces_build_options(sub, args->pieces);
+  add_binary_build_options(sub, args->binary);
   sub->callback(
       [args, &global, &run] { run = [args, &global] { return run_build(*args, global); }; });
 }

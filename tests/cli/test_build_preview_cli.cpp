@@ -91,8 +91,12 @@ TEST_CASE("ramus build options change the mesh", "[cli][build]") {
 
 TEST_CASE("ramus build and preview reject bad invocations clearly", "[cli][build]") {
   const std::string src = example("abop/fig2_6a_monopodial.ramus");
-  Run r = run("build \"" + src + "\" -o x.glb --target pieces");
+  Run r = run("build \"" + src + "\" -o x.glb --target voxels");
   CHECK(r.status == 2);
+  // pieces is a target, but this grammar has no pieces block: an input error, not usage.
+  r = run("build \"" + src + "\" -o x.glb --target pieces");
+  CHECK(r.status == 1);
+  CHECK((r.out + r.err).find("pieces") != std::string::npos);
   r = run("build \"" + src + "\" -o x.fbx");
   CHECK(r.status == 2);
   CHECK(r.out.find(".glb") != std::string::npos);

@@ -1,0 +1,28 @@
+// The container side of glTF output, shared by every glTF writer: a model serialized once as a
+// GLB either stays a .glb, or becomes a .gltf whose one buffer lives in a .bin beside it.
+#pragma once
+
+#include <functional>
+#include <optional>
+#include <string>
+
+namespace ramus::mesh {
+
+struct GltfBytes {
+  std::string main;  // a GLB container, or the JSON of a .gltf
+  std::string bin;   // the .bin of a .gltf (empty for a .glb)
+};
+
+// The JSON chunk of `glb` with its first buffer pointing at `bin_uri` (URI-escaped), followed by
+// a newline: the text of a .gltf. nullopt when the JSON holds no buffer.
+std::optional<std::string> gltf_json_with_buffer_uri(const std::string& glb,
+                                                     const std::string& bin_uri);
+
+// Writes `path` atomically: for .glb the bytes encode(true, "") gives; for .gltf the JSON of
+// encode(false, "<stem>.bin") and that .bin beside it. Returns false, writing nothing, when
+// `path` ends in neither (the caller reports it in its own error type).
+bool write_gltf_files(
+    const std::string& path,
+    const std::function<GltfBytes(bool binary, const std::string& bin_uri)>& encode);
+
+}  // namespace ramus::mesh

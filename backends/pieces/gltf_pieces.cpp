@@ -1,0 +1,525 @@
+// glTF encodings of a pieces forest (gltf_pieces.h). The second file that includes tiny_gltf.h
+// (after backends/mesh/gltf_writer.cpp); the validator rules it follows are the same: views on
+// 4-byte boundaries, vertex views with the ARRAY_BUFFER target, index views ELEMENT_ARRAY_BUFFER,
+// inverse bind matrices, animation and instance data in views without a target or stride, exact
+// min/max on every float vertex accessor, and skin weights that sum to one in float.
+#include "backends/pieces/gltf_pieces.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <sstream>
+
+#include "backends/mesh/gltf_buffer_builder.h"
+
+namespace ramus::pieces {
+namespace {
+
+using tinygltf::Value;
+
+// One vertex's skin binding as glTF wants it: no joint twice among the non-zero weights,
+// unused slots joint 0 with weight 0, float weights summing to one.
+struct SkinVertex {
+  std::array<std::uint32_t, 4> joints{0, 0, 0, 0};
+  std::array<float, 4> weights{0, 0, 0, 0};
+};
+
+SkinVertex normalize_skin(const std::array<std::uint16_t, 4>& joints,
+                          const std::array<float, 4>& weights, std::uint32_t offset) {
+  SkinVertex v;
+  int used = 0;
+  for (int s = 0; s < 4; ++s) {
+    if (!(weights[s] > 0)) continue;
+    const std::uint32_t j = offset + joints[s];
+    int at = 0;
+    while (at < used && v.joints[at] != j) ++at;
+    if (at == used) {
+      v.joints[used] = j;
+      v.weights[used++] = weights[s];
+    } else {
+      v.weights[at] += weights[s];
+    }
+  }
+  if (used == 0) {  // an unbound vertex follows the piece's root joint
+    v.joints[0] = offset;
+    v.weights[0] = 1;
+    return v;
+  }
+  double sum = 0;
+  for (int s = 0; s < used; ++s) sum += v.weights[s];
+  int biggest = 0;
+  for (int s = 0; s < used; ++s) {
+    v.weights[s] = float(v.weights[s] / sum);
+    if (v.weights[s] > v.weights[biggest]) biggest = s;
+  }
+  float rest = 0;
+  for (int s = 0; s < used; ++s)
+    if (s != biggest) rest += v.weights[s];
+  v.weights[biggest] = 1.0f - rest;
+  return v;
+}
+
+std::string node_safe(const std::string& s) {
+  std::string out;
+  for (unsigned char c : s) out += std::isalnum(c) ? char(c) : '_';
+  return out;
+}
+
+std::array<float, 4> unit_quat(const Quat& q) {
+  const Quat n = q.normalized();
+  return {float(n.x), float(n.y), float(n.z), float(n.w)};
+}
+
+class Builder : public mesh::GltfBufferBuilder {
+ public:
+  int view(const void* data, std::size_t bytes, int target) {
+    return add_view(data, bytes, target);
+  }
+
+  int accessor(int view, int component, std::size_t count, int type, bool normalized = false,
+               std::vector<double> lo = {}, std::vector<double> hi = {}) {
+    return add_accessor(view, component, count, type, std::move(lo), std::move(hi), normalized);
+  }
+
+  // Float data of `comps` components per element; with_bounds adds exact min/max.
+  int floats(const std::vector<float>& f, int comps, int type, int target, bool with_bounds) {
+    return add_floats(f.data(), f.size() / comps, comps, type, target, with_bounds);
+  }
+
+  int joints(const std::vector<std::uint32_t>& j, bool wide) {
+    if (wide) {
+      std::vector<std::uint16_t> s(j.begin(), j.end());
+      const int v = view(s.data(), s.size() * 2, TINYGLTF_TARGET_ARRAY_BUFFER);
+      return accessor(v, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, s.size() / 4, TINYGLTF_TYPE_VEC4);
+    }
+    std::vector<std::uint8_t> s(j.begin(), j.end());
+    const int v = view(s.data(), s.size(), TINYGLTF_TARGET_ARRAY_BUFFER);
+    return accessor(v, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, s.size() / 4, TINYGLTF_TYPE_VEC4);
+  }
+
+  int matrices(const std::vector<Mat4>& ms) {
+    std::vector<float> f;
+    f.reserve(ms.size() * 16);
+    for (const Mat4& m : ms)
+      for (double x : m.m) f.push_back(float(x));
+    return floats(f, 16, TINYGLTF_TYPE_MAT4, 0, false);
+  }
+
+  int material() {
+    tinygltf::Material m;
+    m.name = "bark";
+    m.pbrMetallicRoughness.baseColorFactor = {0.45, 0.33, 0.22, 1.0};
+    m.pbrMetallicRoughness.metallicFactor = 0.0;
+    m.pbrMetallicRoughness.roughnessFactor = 0.9;
+    model_.materials.push_back(m);
+    return int(model_.materials.size() - 1);
+  }
+};
+
+Value int_array(const std::vector<std::uint16_t>& v, std::size_t first, std::size_t count) {
+  Value::Array a;
+  a.reserve(count);
+  for (std::size_t i = 0; i < count; ++i) a.emplace_back(int(v[first + i]));
+  return Value(std::move(a));
+}
+
+// Triangles of a quad mesh: quad q becomes triangles 2q (a b c) and 2q + 1 (a c d).
+void append_triangles(const PieceMesh& mesh, std::uint32_t base, std::vector<std::uint32_t>& out) {
+  for (const auto& q : mesh.quads) {
+    for (int k : {0, 1, 2, 0, 2, 3}) out.push_back(base + q[k]);
+  }
+}
+
+const PieceMesh& lod_mesh(const PieceSet& set, std::uint32_t type, std::size_t lod) {
+  const PieceType& t = set.types[type];
+  if (lod >= t.lods.size()) {
+    throw PiecesError("piece " + t.name + " has " + std::to_string(t.lods.size()) +
+                      " levels of detail; level " + std::to_string(lod) + " was asked for");
+  }
+  return t.lods[lod];
+}
+
+// A piece type's mesh in piece space; `skinned` adds JOINTS_0/WEIGHTS_0 (piece-local joints),
+// otherwise the same binding goes into the custom _JOINTS_0/_WEIGHTS_0 for instancing shaders.
+int add_piece_mesh(Builder& b, const PieceSet& set, std::uint32_t type, std::size_t lod,
+                   int material, bool skinned) {
+  const PieceMesh& m = lod_mesh(set, type, lod);
+  std::vector<float> pos, nrm, uv, wts;
+  std::vector<std::uint32_t> jts;
+  for (std::size_t v = 0; v < m.positions.size(); ++v) {
+    for (int c = 0; c < 3; ++c) pos.push_back(float(m.positions[v][c]));
+    const Vec3 n = normalized(m.normals.at(v));
+    for (int c = 0; c < 3; ++c) nrm.push_back(float(n[c]));
+    uv.push_back(m.uvs.at(v)[0]);
+    uv.push_back(m.uvs.at(v)[1]);
+    const SkinVertex s = normalize_skin(m.joints.at(v), m.weights.at(v), 0);
+    jts.insert(jts.end(), s.joints.begin(), s.joints.end());
+    wts.insert(wts.end(), s.weights.begin(), s.weights.end());
+  }
+  std::vector<std::uint32_t> idx;
+  append_triangles(m, 0, idx);
+  tinygltf::Primitive prim;
+  prim.mode = TINYGLTF_MODE_TRIANGLES;
+  prim.material = material;
+  prim.attributes["POSITION"] =
+      b.floats(pos, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  prim.attributes["NORMAL"] =
+      b.floats(nrm, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  prim.attributes["TEXCOORD_0"] =
+      b.floats(uv, 2, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  const bool wide = set.types[type].joints.size() > 255;
+  prim.attributes[skinned ? "JOINTS_0" : "_JOINTS_0"] = b.joints(jts, wide);
+  prim.attributes[skinned ? "WEIGHTS_0" : "_WEIGHTS_0"] =
+      b.floats(wts, 4, TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER, !skinned);
+  prim.indices = b.add_indices(idx, m.positions.size());
+  tinygltf::Mesh mesh;
+  mesh.name = set.types[type].name;
+  mesh.primitives.push_back(prim);
+  Value::Object extras;
+  extras["pieceType"] = Value(set.types[type].name);
+  extras["segments"] = Value(m.segments);
+  extras["quads"] = Value(int(m.quads.size()));
+  if (m.segments > 1) {
+    Value::Array src;
+    for (std::uint32_t s : m.quad_source) src.emplace_back(int(s));
+    extras["quadSource"] = Value(std::move(src));
+  }
+  mesh.extras = Value(std::move(extras));
+  b.model().meshes.push_back(std::move(mesh));
+  return int(b.model().meshes.size() - 1);
+}
+
+// Node 0 is the root of the bone hierarchies; bone g (global) is node 1 + g.
+void add_bone_nodes(Builder& b, const Forest& forest, const PiecesLayout& layout,
+                    const PieceSet& set, const std::string& name) {
+  auto& nodes = b.model().nodes;
+  tinygltf::Node root;
+  root.name = name + "_bones";
+  nodes.push_back(root);
+  for (std::size_t k = 0; k < forest.trees.size(); ++k) {
+    const Tree& tree = forest.trees[k];
+    for (std::size_t i = 0; i < tree.bones.size(); ++i) {
+      const std::uint32_t g = layout.tree_bone_base[k] + std::uint32_t(i);
+      const Bone& bone = tree.bones[i];
+      const PlacedPiece& piece = tree.pieces[bone.piece];
+      tinygltf::Node n;
+      n.name = "t" + std::to_string(k) + "_p" + std::to_string(bone.piece) + "_" +
+               node_safe(set.types[piece.type].joints[bone.joint].name);
+      const Trs& t = layout.bone_local[g];
+      n.translation = {t.t.x, t.t.y, t.t.z};
+      const Quat q = t.r.normalized();
+      n.rotation = {q.x, q.y, q.z, q.w};
+      n.scale = {t.s, t.s, t.s};
+      nodes.push_back(n);
+      const std::uint32_t parent = layout.bone_parent[g];
+      nodes[parent == kNone ? 0 : 1 + parent].children.push_back(int(1 + g));
+    }
+  }
+}
+
+// The wind clip of every tree as one looping animation of the bone nodes' rotations. Only bones
+// whose rotation changes get a channel.
+void add_wind(Builder& b, const Forest& forest, const PiecesLayout& layout,
+              const PiecesGltfOptions& o) {
+  tinygltf::Animation anim;
+  anim.name = "wind";
+  std::map<std::vector<double>, int> inputs;  // key times -> accessor
+  for (std::size_t k = 0; k < forest.trees.size(); ++k) {
+    const Tree& tree = forest.trees[k];
+    WindOptions wo = o.wind_options;
+    wo.seed = o.wind_options.seed + k;
+    const WindClip clip = wind_clip(tree, tree.pose, wo);
+    if (clip.times.size() < 2) continue;
+    auto [it, fresh] = inputs.try_emplace(clip.times, -1);
+    for (std::size_t bone = 0; bone < tree.bones.size(); ++bone) {
+      bool moves = false;
+      const Quat& q0 = clip.rotations.at(0).at(bone);
+      for (const auto& key : clip.rotations) {
+        const Quat& q = key.at(bone);
+        moves = moves || std::abs(q.w - q0.w) + std::abs(q.x - q0.x) + std::abs(q.y - q0.y) +
+                                 std::abs(q.z - q0.z) >
+                             1e-9;
+      }
+      if (!moves) continue;
+      if (it->second < 0) {
+        std::vector<float> t(clip.times.begin(), clip.times.end());
+        it->second = b.floats(t, 1, TINYGLTF_TYPE_SCALAR, 0, true);
+      }
+      std::vector<float> out;
+      for (const auto& key : clip.rotations) {
+        const auto q = unit_quat(key[bone]);
+        out.insert(out.end(), q.begin(), q.end());
+      }
+      tinygltf::AnimationSampler s;
+      s.input = it->second;
+      s.output = b.floats(out, 4, TINYGLTF_TYPE_VEC4, 0, false);
+      s.interpolation = "LINEAR";
+      anim.samplers.push_back(s);
+      tinygltf::AnimationChannel c;
+      c.sampler = int(anim.samplers.size() - 1);
+      c.target_node = int(1 + layout.tree_bone_base[k] + bone);
+      c.target_path = "rotation";
+      anim.channels.push_back(c);
+    }
+  }
+  if (!anim.channels.empty()) b.model().animations.push_back(std::move(anim));
+}
+
+Value scene_extras(const PieceSet& set, const Forest& forest, const PiecesLayout& layout,
+                   const char* encoding) {
+  Value::Object e;
+  e["pieceSet"] = Value(set.name);
+  e["encoding"] = Value(std::string(encoding));
+  e["trees"] = Value(int(forest.trees.size()));
+  e["pieces"] = Value(int(layout.instances.size()));
+  e["bones"] = Value(int(layout.bone_count()));
+  return Value(std::move(e));
+}
+
+void build_canonical(Builder& b, const PieceSet& set, const Forest& forest,
+                     const PiecesLayout& layout, const PiecesGltfOptions& o) {
+  const int material = b.material();
+  std::vector<int> mesh_of(set.types.size(), -1), ibm_of(set.types.size(), -1);
+  for (std::uint32_t t = 0; t < set.types.size(); ++t) {
+    if (layout.type_ranges[t].count == 0) continue;
+    mesh_of[t] = add_piece_mesh(b, set, t, o.lod, material, true);
+    std::vector<Mat4> ibm;
+    for (const Joint& j : set.types[t].joints) ibm.push_back(j.inverse_bind);
+    ibm_of[t] = b.matrices(ibm);
+  }
+  add_bone_nodes(b, forest, layout, set, o.name);
+  auto& model = b.model();
+  tinygltf::Scene scene;
+  scene.name = o.name;
+  scene.nodes.push_back(0);
+  for (const OutputInstance& inst : layout.instances) {
+    const PieceType& type = set.types[inst.type];
+    tinygltf::Skin skin;
+    skin.name = "t" + std::to_string(inst.tree) + "_p" + std::to_string(inst.piece);
+    skin.inverseBindMatrices = ibm_of[inst.type];
+    skin.skeleton = int(1 + inst.bone_offset);
+    for (std::size_t j = 0; j < type.joints.size(); ++j)
+      skin.joints.push_back(int(1 + inst.bone_offset + j));
+    model.skins.push_back(skin);
+    tinygltf::Node n;
+    n.name = skin.name + "_" + node_safe(type.name);
+    n.mesh = mesh_of[inst.type];
+    n.skin = int(model.skins.size() - 1);
+    Value::Object extras;
+    extras["tree"] = Value(int(inst.tree));
+    extras["piece"] = Value(int(inst.piece));
+    extras["pieceType"] = Value(type.name);
+    extras["boneOffset"] = Value(int(inst.bone_offset));
+    extras["tiles"] = int_array(layout.tiles, inst.tile_offset, inst.tile_count);
+    n.extras = Value(std::move(extras));
+    model.nodes.push_back(n);
+    scene.nodes.push_back(int(model.nodes.size() - 1));
+  }
+  if (o.wind) add_wind(b, forest, layout, o);
+  scene.extras = scene_extras(set, forest, layout, "canonical");
+  model.scenes.push_back(scene);
+  model.defaultScene = 0;
+}
+
+void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
+                     const PiecesLayout& layout, const PiecesGltfOptions& o) {
+  if (layout.bone_count() > 0xffff) {
+    throw PiecesError("--flatten addresses bones with 16-bit joint indices; this forest has " +
+                      std::to_string(layout.bone_count()) + " bones (use fewer trees or " +
+                      "the canonical encoding)");
+  }
+  const int material = b.material();
+  // The bind pose of the merged mesh is the written pose: vertices are the skinned positions,
+  // each bone's inverse bind matrix the inverse of its world transform.
+  std::vector<Mat4> world(layout.bone_count()), ibm(layout.bone_count());
+  for (std::size_t g = 0; g < world.size(); ++g) {
+    world[g] = layout.bone_world[g].matrix();
+    ibm[g] = layout.bone_world[g].inverse().matrix();
+  }
+  std::vector<float> pos, nrm, uv, wts;
+  std::vector<std::uint32_t> jts, idx;
+  Value::Array pieces;
+  std::size_t first_quad = 0;
+  for (const OutputInstance& inst : layout.instances) {
+    const Tree& tree = forest.trees[inst.tree];
+    const PieceMesh& m = lod_mesh(set, inst.type, o.lod);
+    const std::span<const Mat4> tree_world(world.data() + layout.tree_bone_base[inst.tree],
+                                           tree.bones.size());
+    const SkinnedPiece sp = skin_piece(set, tree, tree_world, inst.piece, o.lod);
+    const std::uint32_t base = std::uint32_t(pos.size() / 3);
+    for (std::size_t v = 0; v < m.positions.size(); ++v) {
+      for (int c = 0; c < 3; ++c) pos.push_back(float(sp.positions[v][c]));
+      const Vec3 n = normalized(sp.normals[v]);
+      for (int c = 0; c < 3; ++c) nrm.push_back(float(n[c]));
+      uv.push_back(m.uvs[v][0]);
+      uv.push_back(m.uvs[v][1]);
+      const SkinVertex s = normalize_skin(m.joints[v], m.weights[v], inst.bone_offset);
+      jts.insert(jts.end(), s.joints.begin(), s.joints.end());
+      wts.insert(wts.end(), s.weights.begin(), s.weights.end());
+    }
+    append_triangles(m, base, idx);
+    Value::Object p;
+    p["tree"] = Value(int(inst.tree));
+    p["piece"] = Value(int(inst.piece));
+    p["pieceType"] = Value(set.types[inst.type].name);
+    p["boneOffset"] = Value(int(inst.bone_offset));
+    p["firstQuad"] = Value(int(first_quad));
+    p["quads"] = Value(int(m.quads.size()));
+    p["tiles"] = int_array(layout.tiles, inst.tile_offset, inst.tile_count);
+    pieces.emplace_back(std::move(p));
+    first_quad += m.quads.size();
+  }
+  if (idx.empty()) throw PiecesError("nothing to write: the forest has no geometry");
+  tinygltf::Primitive prim;
+  prim.mode = TINYGLTF_MODE_TRIANGLES;
+  prim.material = material;
+  prim.attributes["POSITION"] =
+      b.floats(pos, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  prim.attributes["NORMAL"] =
+      b.floats(nrm, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  prim.attributes["TEXCOORD_0"] =
+      b.floats(uv, 2, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  prim.attributes["JOINTS_0"] = b.joints(jts, true);
+  prim.attributes["WEIGHTS_0"] =
+      b.floats(wts, 4, TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER, false);
+  prim.indices = b.add_indices(idx, pos.size() / 3);
+  auto& model = b.model();
+  tinygltf::Mesh mesh;
+  mesh.name = o.name;
+  mesh.primitives.push_back(prim);
+  model.meshes.push_back(std::move(mesh));
+  add_bone_nodes(b, forest, layout, set, o.name);
+  tinygltf::Skin skin;
+  skin.name = o.name;
+  skin.inverseBindMatrices = b.matrices(ibm);
+  skin.skeleton = 0;
+  for (std::size_t g = 0; g < layout.bone_count(); ++g) skin.joints.push_back(int(1 + g));
+  model.skins.push_back(skin);
+  tinygltf::Node n;
+  n.name = o.name + "_mesh";
+  n.mesh = 0;
+  n.skin = 0;
+  Value::Object extras;
+  extras["pieces"] = Value(std::move(pieces));
+  n.extras = Value(std::move(extras));
+  model.nodes.push_back(n);
+  tinygltf::Scene scene;
+  scene.name = o.name;
+  scene.nodes = {0, int(model.nodes.size() - 1)};
+  if (o.wind) add_wind(b, forest, layout, o);
+  scene.extras = scene_extras(set, forest, layout, "flatten");
+  model.scenes.push_back(scene);
+  model.defaultScene = 0;
+}
+
+void build_instanced(Builder& b, const PieceSet& set, const Forest& forest,
+                     const PiecesLayout& layout, const PiecesGltfOptions& o) {
+  const int material = b.material();
+  auto& model = b.model();
+  model.extensionsUsed.push_back("EXT_mesh_gpu_instancing");
+  tinygltf::Scene scene;
+  scene.name = o.name;
+  for (std::uint32_t t = 0; t < set.types.size(); ++t) {
+    const TypeRange r = layout.type_ranges[t];
+    if (r.count == 0) continue;
+    const int mesh = add_piece_mesh(b, set, t, o.lod, material, false);
+    std::vector<float> tr, rot, scl, bone_offset, tile;
+    std::vector<std::uint16_t> table;
+    for (std::uint32_t i = r.first; i < r.first + r.count; ++i) {
+      const OutputInstance& inst = layout.instances[layout.by_type[i]];
+      // The rigid placement of the piece: its root joint's world transform (bind pose identity).
+      const Trs& w = layout.bone_world[inst.bone_offset];
+      tr.insert(tr.end(), {float(w.t.x), float(w.t.y), float(w.t.z)});
+      const auto q = unit_quat(w.r);
+      rot.insert(rot.end(), q.begin(), q.end());
+      scl.insert(scl.end(), {float(w.s), float(w.s), float(w.s)});
+      bone_offset.push_back(float(inst.bone_offset));
+      tile.push_back(float(table.size()));
+      table.insert(table.end(), layout.tiles.begin() + inst.tile_offset,
+                   layout.tiles.begin() + inst.tile_offset + inst.tile_count);
+    }
+    Value::Object attrs;
+    attrs["TRANSLATION"] = Value(b.floats(tr, 3, TINYGLTF_TYPE_VEC3, 0, true));
+    attrs["ROTATION"] = Value(b.floats(rot, 4, TINYGLTF_TYPE_VEC4, 0, false));
+    attrs["SCALE"] = Value(b.floats(scl, 3, TINYGLTF_TYPE_VEC3, 0, false));
+    attrs["_BONE_OFFSET"] = Value(b.floats(bone_offset, 1, TINYGLTF_TYPE_SCALAR, 0, false));
+    attrs["_TILE"] = Value(b.floats(tile, 1, TINYGLTF_TYPE_SCALAR, 0, false));
+    Value::Object ext;
+    ext["attributes"] = Value(std::move(attrs));
+    tinygltf::Node n;
+    n.name = node_safe(set.types[t].name) + "_instances";
+    n.mesh = mesh;
+    n.extensions["EXT_mesh_gpu_instancing"] = Value(std::move(ext));
+    int table_accessor = -1;
+    if (!table.empty()) {
+      const int v = b.view(table.data(), table.size() * 2, 0);
+      table_accessor =
+          b.accessor(v, TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, table.size(), TINYGLTF_TYPE_SCALAR);
+    }
+    Value::Object extras;
+    extras["pieceType"] = Value(set.types[t].name);
+    extras["instances"] = Value(int(r.count));
+    extras["tileTable"] = Value(table_accessor);
+    extras["tilesPerInstance"] = Value(int(set.types[t].lods[0].quads.size()));
+    n.extras = Value(std::move(extras));
+    model.nodes.push_back(n);
+    scene.nodes.push_back(int(model.nodes.size() - 1));
+  }
+  Value e = scene_extras(set, forest, layout, "gpu-instancing");
+  Value::Object obj = e.Get<Value::Object>();
+  obj["boneMatrices"] = Value(b.matrices(layout.skinning));
+  scene.extras = Value(std::move(obj));
+  model.scenes.push_back(scene);
+  model.defaultScene = 0;
+}
+
+}  // namespace
+
+PiecesGltfBytes encode_pieces_gltf(const PieceSet& set, const Forest& forest,
+                                   const PiecesGltfOptions& options, bool binary,
+                                   const std::string& bin_uri) {
+  const PiecesLayout layout = layout_forest(set, forest);
+  if (layout.instances.empty()) throw PiecesError("nothing to write: the forest has no pieces");
+  Builder b;
+  switch (options.encoding) {
+    case GltfEncoding::kCanonical:
+      build_canonical(b, set, forest, layout, options);
+      break;
+    case GltfEncoding::kFlatten:
+      build_flattened(b, set, forest, layout, options);
+      break;
+    case GltfEncoding::kGpuInstancing:
+      build_instanced(b, set, forest, layout, options);
+      break;
+  }
+  if (b.model().buffers[0].data.size() > 0xfffffff0ull) {
+    throw PiecesError("the pieces need a buffer larger than glTF's 4 GiB limit");
+  }
+  PiecesGltfBytes out;
+  if (!binary) out.bin.assign(b.model().buffers[0].data.begin(), b.model().buffers[0].data.end());
+  std::ostringstream glb;
+  tinygltf::TinyGLTF gltf;
+  if (!gltf.WriteGltfSceneToStream(&b.model(), glb, false, true)) {
+    throw PiecesError("glTF serialization failed");
+  }
+  if (binary) {
+    out.main = glb.str();
+    return out;
+  }
+  std::optional<std::string> json = mesh::gltf_json_with_buffer_uri(glb.str(), bin_uri);
+  if (!json) throw PiecesError("glTF serialization produced no buffer");
+  out.main = std::move(*json);
+  return out;
+}
+
+void write_pieces_gltf(const PieceSet& set, const Forest& forest, const PiecesGltfOptions& options,
+                       const std::string& path) {
+  const bool written = mesh::write_gltf_files(path, [&](bool binary, const std::string& bin_uri) {
+    return encode_pieces_gltf(set, forest, options, binary, bin_uri);
+  });
+  if (!written) throw PiecesError("a glTF file name must end in .glb or .gltf: " + path);
+}
+
+}  // namespace ramus::pieces

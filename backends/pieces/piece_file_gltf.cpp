@@ -1,0 +1,229 @@
+// A piece from a glTF 2.0 file (.gltf or .glb), read with tinygltf (this is the pieces back end's
+// only file that includes it). glTF has no quads, so the piece's mesh is written as triangles in
+// pairs: triangles 2i and 2i+1 share an edge and together make quad i. Rims are nodes named
+// `rim:<name>` whose mesh has one primitive listing the six rim vertices in order (mode POINTS,
+// LINE_LOOP or LINE_STRIP); they are matched to the piece's vertices by position. Node transforms
+// are applied; vertices at the same position are merged (exporters split them at UV seams).
+#include <tiny_gltf.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <map>
+
+#include "backends/pieces/piece_build.h"
+
+namespace ramus::pieces {
+
+namespace {
+
+const unsigned char* accessor_data(const tinygltf::Model& m, const tinygltf::Accessor& a,
+                                   std::size_t& stride, const std::string& path) {
+  if (a.bufferView < 0 || a.bufferView >= int(m.bufferViews.size())) {
+    throw PiecesError(path + ": an accessor has no buffer view");
+  }
+  const tinygltf::BufferView& v = m.bufferViews[a.bufferView];
+  if (v.buffer < 0 || v.buffer >= int(m.buffers.size())) {
+    throw PiecesError(path + ": a buffer view has no buffer");
+  }
+  const auto& data = m.buffers[v.buffer].data;
+  int comps = tinygltf::GetNumComponentsInType(a.type);
+  int size = tinygltf::GetComponentSizeInBytes(a.componentType);
+  if (comps <= 0 || size <= 0) throw PiecesError(path + ": an accessor has an unknown type");
+  std::size_t elem = std::size_t(comps) * std::size_t(size);
+  stride = v.byteStride ? v.byteStride : elem;
+  std::size_t begin = v.byteOffset + a.byteOffset;
+  if (a.count > 0 && (begin + stride * (a.count - 1) + elem > data.size() ||
+                      a.byteOffset + stride * (a.count - 1) + elem > v.byteLength)) {
+    throw PiecesError(path + ": an accessor reaches past its buffer");
+  }
+  return data.data() + begin;
+}
+
+std::vector<Vec3> read_vec3(const tinygltf::Model& m, int index, const std::string& path) {
+  if (index < 0 || index >= int(m.accessors.size())) throw PiecesError(path + ": no such accessor");
+  const tinygltf::Accessor& a = m.accessors[index];
+  if (a.type != TINYGLTF_TYPE_VEC3 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
+    throw PiecesError(path + ": POSITION must be float VEC3");
+  }
+  std::size_t stride = 0;
+  const unsigned char* p = accessor_data(m, a, stride, path);
+  std::vector<Vec3> out(a.count);
+  for (std::size_t i = 0; i < a.count; ++i) {
+    float f[3];
+    std::memcpy(f, p + i * stride, sizeof f);
+    out[i] = {f[0], f[1], f[2]};
+  }
+  return out;
+}
+
+std::vector<std::uint32_t> read_indices(const tinygltf::Model& m, const tinygltf::Primitive& prim,
+                                        std::size_t vertex_count, const std::string& path) {
+  std::vector<std::uint32_t> out;
+  if (prim.indices < 0) {
+    for (std::size_t i = 0; i < vertex_count; ++i) out.push_back(std::uint32_t(i));
+    return out;
+  }
+  if (prim.indices >= int(m.accessors.size())) throw PiecesError(path + ": no such accessor");
+  const tinygltf::Accessor& a = m.accessors[prim.indices];
+  std::size_t stride = 0;
+  const unsigned char* p = accessor_data(m, a, stride, path);
+  for (std::size_t i = 0; i < a.count; ++i) {
+    std::uint32_t v = 0;
+    if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
+      v = p[i * stride];
+    } else if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
+      std::uint16_t s;
+      std::memcpy(&s, p + i * stride, 2);
+      v = s;
+    } else if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
+      std::memcpy(&v, p + i * stride, 4);
+    } else {
+      throw PiecesError(path + ": indices must be unsigned integers");
+    }
+    if (v >= vertex_count) throw PiecesError(path + ": an index names a missing vertex");
+    out.push_back(v);
+  }
+  return out;
+}
+
+Mat4 node_local(const tinygltf::Node& n) {
+  Mat4 m;
+  if (n.matrix.size() == 16) {
+    for (int i = 0; i < 16; ++i) m.m[i] = n.matrix[i];
+    return m;
+  }
+  Trs t;
+  if (n.translation.size() == 3) t.t = {n.translation[0], n.translation[1], n.translation[2]};
+  if (n.rotation.size() == 4) t.r = {n.rotation[3], n.rotation[0], n.rotation[1], n.rotation[2]};
+  Mat4 s;
+  if (n.scale.size() == 3) {
+    s(0, 0) = n.scale[0];
+    s(1, 1) = n.scale[1];
+    s(2, 2) = n.scale[2];
+  }
+  return t.matrix() * s;
+}
+
+struct Reader {
+  Reader(const tinygltf::Model& model, const std::string& file) : m(model), path(file) {}
+  const tinygltf::Model& m;
+  const std::string& path;
+  std::vector<Vec3> positions;  // merged
+  std::map<std::array<long long, 3>, std::uint32_t> at;
+  std::vector<std::array<std::uint32_t, 4>> quads;
+  std::vector<std::pair<std::string, std::vector<Vec3>>> rim_points;
+  double quantum = 1e-6;
+
+  std::array<long long, 3> key(const Vec3& p) const {
+    return {std::llround(p.x / quantum), std::llround(p.y / quantum), std::llround(p.z / quantum)};
+  }
+  std::uint32_t merge(const Vec3& p) {
+    auto [it, fresh] = at.emplace(key(p), std::uint32_t(positions.size()));
+    if (fresh) positions.push_back(p);
+    return it->second;
+  }
+
+  void node(int index, const Mat4& parent, int depth) {
+    if (index < 0 || index >= int(m.nodes.size()) || depth > 64) {
+      throw PiecesError(path + ": a node reference is out of range or cyclic");
+    }
+    const tinygltf::Node& n = m.nodes[index];
+    Mat4 world = parent * node_local(n);
+    if (n.mesh >= 0 && n.mesh < int(m.meshes.size())) mesh(n, world);
+    for (int c : n.children) node(c, world, depth + 1);
+  }
+
+  void mesh(const tinygltf::Node& n, const Mat4& world) {
+    bool rim = n.name.rfind("rim:", 0) == 0;
+    for (const tinygltf::Primitive& prim : m.meshes[n.mesh].primitives) {
+      auto pos = prim.attributes.find("POSITION");
+      if (pos == prim.attributes.end()) continue;
+      std::vector<Vec3> p = read_vec3(m, pos->second, path);
+      for (Vec3& v : p) v = world.point(v);
+      std::vector<std::uint32_t> idx = read_indices(m, prim, p.size(), path);
+      if (rim) {
+        std::vector<Vec3> pts;
+        for (std::uint32_t i : idx) pts.push_back(p[i]);
+        rim_points.push_back({n.name.substr(4), pts});
+        continue;
+      }
+      if (prim.mode != TINYGLTF_MODE_TRIANGLES && prim.mode != -1) {
+        throw PiecesError(path + ": mesh '" + m.meshes[n.mesh].name +
+                          "' is not made of triangles (pairs of them form the quads)");
+      }
+      if (idx.size() % 6 != 0) {
+        throw PiecesError(path + ": mesh '" + m.meshes[n.mesh].name +
+                          "' has an odd number of triangles; pieces are quad meshes");
+      }
+      for (std::size_t t = 0; t < idx.size(); t += 6) {
+        std::uint32_t a[3] = {merge(p[idx[t]]), merge(p[idx[t + 1]]), merge(p[idx[t + 2]])};
+        std::uint32_t b[3] = {merge(p[idx[t + 3]]), merge(p[idx[t + 4]]), merge(p[idx[t + 5]])};
+        quads.push_back(pair_quad(a, b, t / 6));
+      }
+    }
+  }
+
+  // The quad made of two triangles sharing an edge: the vertex of b not in a goes between the
+  // shared edge's ends, keeping a's winding.
+  std::array<std::uint32_t, 4> pair_quad(const std::uint32_t* a, const std::uint32_t* b,
+                                         std::size_t q) const {
+    for (int e = 0; e < 3; ++e) {
+      std::uint32_t u = a[e], v = a[(e + 1) % 3];
+      for (int f = 0; f < 3; ++f) {
+        // b walks the shared edge the other way: v -> u.
+        if (b[f] == v && b[(f + 1) % 3] == u) {
+          std::uint32_t extra = b[(f + 2) % 3];
+          return {a[(e + 2) % 3], u, extra, v};
+        }
+      }
+    }
+    throw PiecesError(path + ": triangles " + std::to_string(2 * q) + " and " +
+                      std::to_string(2 * q + 1) + " share no edge, so they are not a quad");
+  }
+};
+
+}  // namespace
+
+PieceDraft draft_gltf_file(const std::string& name, const std::string& path) {
+  tinygltf::Model model;
+  tinygltf::TinyGLTF loader;
+  std::string err, warn;
+  bool binary = path.size() >= 4 && (path.compare(path.size() - 4, 4, ".glb") == 0 ||
+                                     path.compare(path.size() - 4, 4, ".GLB") == 0);
+  bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                   : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+  if (!ok)
+    throw PiecesError(path + ": cannot read the glTF file" + (err.empty() ? "" : ": " + err));
+  Reader r{model, path};
+  // Merge tolerance: a millionth of the file's extent.
+  double extent = 0;
+  for (const tinygltf::Accessor& a : model.accessors) {
+    for (std::size_t i = 0; i < a.maxValues.size() && i < a.minValues.size(); ++i) {
+      extent = std::max(extent, std::abs(a.maxValues[i] - a.minValues[i]));
+    }
+  }
+  r.quantum = std::max(extent, 1e-3) * 1e-6;
+  int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+  if (scene < int(model.scenes.size())) {
+    for (int n : model.scenes[scene].nodes) r.node(n, Mat4{}, 0);
+  } else {
+    for (std::size_t n = 0; n < model.nodes.size(); ++n) r.node(int(n), Mat4{}, 0);
+  }
+  std::vector<RawRim> rims;
+  for (auto& [rim_name, pts] : r.rim_points) {
+    RawRim rim;
+    rim.name = rim_name;
+    for (const Vec3& p : pts) {
+      auto it = r.at.find(r.key(p));
+      if (it == r.at.end()) {
+        throw PiecesError(path + ": a vertex of rim:" + rim_name + " is not a vertex of the piece");
+      }
+      rim.vertices.push_back(it->second);
+    }
+    rims.push_back(std::move(rim));
+  }
+  return draft_from_raw(name, path, std::move(r.positions), std::move(r.quads), std::move(rims));
+}
+
+}  // namespace ramus::pieces

@@ -1,0 +1,170 @@
+#include "compiler/driver/build_pieces.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <stdexcept>
+
+#include "backends/pieces/gltf_pieces.h"
+#include "backends/pieces/output_instance_buffer.h"
+#include "backends/pieces/output_layout.h"
+#include "backends/pieces/output_posed_mesh.h"
+#include "backends/pieces/pieces.h"
+#include "backends/preview/preview.h"
+#include "compiler/driver/defines.h"
+#include "compiler/grow.h"
+#include "core/atomic_file.h"
+#include "grammar/check.h"
+#include "grammar/loader.h"
+
+namespace ramus::cli {
+namespace {
+
+void print_diagnostics(const SourceManager& sources, DiagnosticSink& diags) {
+  if (diags.all().empty()) return;
+  diags.sort();
+  std::fputs(render_text(sources, diags.all()).c_str(), stderr);
+}
+
+// Copies of one tree stand on a row; the spacing keeps their crowns apart.
+double row_spacing(const pieces::PieceSet& set, const pieces::Tree& tree) {
+  pieces::Forest one;
+  one.trees.push_back(tree);
+  const pieces::PiecesLayout layout = pieces::layout_forest(set, one);
+  double lo = 0, hi = 0;
+  for (const pieces::Trs& w : layout.bone_world) {
+    lo = std::min({lo, w.t.x, w.t.y});
+    hi = std::max({hi, w.t.x, w.t.y});
+  }
+  return 1.2 * (hi - lo) + 4 * set.rim_radius;
+}
+
+}  // namespace
+
+void add_pieces_build_options(CLI::App* sub, PiecesBuildArgs& a) {
+  const char* group = "--target pieces";
+  auto* flat =
+      sub->add_flag("--flatten", a.flatten, "pieces: merge every piece into one mesh with one skin")
+          ->group(group);
+  sub->add_flag("--gpu-instancing", a.gpu_instancing,
+                "pieces: EXT_mesh_gpu_instancing per piece type (_BONE_OFFSET, _TILE), no skins")
+      ->group(group)
+      ->excludes(flat);
+  sub->add_option("--poses", a.poses,
+                  "pieces: K trees of the same topology in K seeded poses (default 1)")
+      ->check(CLI::Range(1, 100000))
+      ->group(group);
+  sub->add_flag("--wind", a.wind, "pieces: add a looping wind clip (glTF animation)")->group(group);
+  sub->add_option("--instance-buffer", a.instance_buffer,
+                  "pieces: also write the engine instance buffer (.bin) and its .json manifest")
+      ->group(group);
+  sub->add_option("--preview", a.preview, "pieces: also draw the posed trees (.png or .svg)")
+      ->group(group);
+  sub->add_option("--pieces", a.block, "pieces: the pieces block (default: the first)")
+      ->group(group);
+}
+
+int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::string& output,
+                 bool quiet) {
+  const std::string ext = std::filesystem::path(output).extension().string();
+  if (ext != ".glb" && ext != ".gltf") {
+    throw UserError("--target pieces writes a .glb or .gltf file, not " + output);
+  }
+  if (!a.preview.empty()) {
+    const std::string pe = std::filesystem::path(a.preview).extension().string();
+    if (pe != ".png" && pe != ".svg") throw UserError("--preview must end in .png or .svg");
+  }
+  const GrowOptions grow_options = to_grow_options(grow);
+  SourceManager sources;
+  DiagnosticSink diags;
+  const Program program = load_program(grow.file, sources, diags);
+  if (!diags.has_errors()) check_program(program, sources, diags);
+  if (diags.has_errors()) {
+    print_diagnostics(sources, diags);
+    return 1;
+  }
+  pieces::LowerPiecesOptions lo;
+  lo.block = a.block;
+  lo.defines = grow_options.defines;
+  const std::uint64_t seed = grow.seed.value_or(1);
+  pieces::PieceSet set;
+  pieces::Tree tree;
+  try {
+    set = pieces::lower_pieces(program, sources, lo, diags);
+    if (diags.has_errors()) {
+      print_diagnostics(sources, diags);
+      return 1;
+    }
+    if (pieces::pieces_block_fits_skeleton(program, a.block)) {
+      SourceManager grow_sources;
+      DiagnosticSink grow_diags;
+      Skeleton skeleton;
+      try {
+        skeleton = grow_file(grow.file, grow_options, grow_sources, grow_diags);
+      } catch (const GrowError& e) {
+        print_diagnostics(grow_sources, grow_diags);
+        if (!grow_diags.has_errors()) throw UserError(e.what());
+        return 1;
+      }
+      pieces::FitOptions fo;
+      fo.seed = seed;
+      tree = pieces::fit_skeleton(set, skeleton, fo);
+    } else {
+      pieces::AssembleOptions ao;
+      ao.seed = seed;
+      tree = pieces::assemble(set, ao);
+    }
+    print_diagnostics(sources, diags);
+    if (a.lod < 0 || std::size_t(a.lod) >= set.lod_segments.size()) {
+      throw UserError("--lod " + std::to_string(a.lod) + ": the pieces are built at " +
+                      std::to_string(set.lod_segments.size()) + " levels (0.." +
+                      std::to_string(set.lod_segments.size() - 1) + ")");
+    }
+    const pieces::Forest forest =
+        pieces::pose_copies(set, tree, a.poses, seed, row_spacing(set, tree));
+    pieces::PiecesGltfOptions go;
+    go.encoding = a.flatten          ? pieces::GltfEncoding::kFlatten
+                  : a.gpu_instancing ? pieces::GltfEncoding::kGpuInstancing
+                                     : pieces::GltfEncoding::kCanonical;
+    go.lod = std::size_t(a.lod);
+    go.wind = a.wind;
+    go.wind_options.seed = seed;
+    go.name = set.name.empty() ? std::filesystem::path(grow.file).stem().string() : set.name;
+    pieces::write_pieces_gltf(set, forest, go, output);
+    std::string manifest;
+    if (!a.instance_buffer.empty()) {
+      manifest = pieces::write_instance_buffer(
+          set, forest, a.instance_buffer,
+          a.flatten ? "" : std::filesystem::path(output).filename().string());
+    }
+    if (!a.preview.empty()) {
+      const mesh::TreeMesh posed =
+          pieces::posed_forest_mesh(set, forest, set.lod_segments.size() - 1);
+      preview::write_preview(posed, a.preview, preview::PreviewOptions{});
+    }
+    if (!quiet) {
+      std::size_t placed = 0, bones = 0;
+      for (const pieces::Tree& t : forest.trees) {
+        placed += t.pieces.size();
+        bones += t.bones.size();
+      }
+      std::fprintf(stderr, "ramus: wrote %s (%zu trees, %zu pieces, %zu bones)\n", output.c_str(),
+                   forest.trees.size(), placed, bones);
+      if (!manifest.empty())
+        std::fprintf(stderr, "ramus: wrote %s and %s\n", a.instance_buffer.c_str(),
+                     manifest.c_str());
+      if (!a.preview.empty()) std::fprintf(stderr, "ramus: wrote %s\n", a.preview.c_str());
+    }
+  } catch (const pieces::PiecesError& e) {
+    print_diagnostics(sources, diags);
+    throw UserError(e.what());
+  } catch (const mesh::MeshError& e) {
+    throw UserError(e.what());
+  } catch (const std::invalid_argument& e) {
+    throw UserError(e.what());
+  }
+  return 0;
+}
+
+}  // namespace ramus::cli

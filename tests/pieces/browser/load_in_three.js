@@ -1,0 +1,235 @@
+#!/usr/bin/env node
+// Loads glTF files in three.js (npm `three`, tools/node_modules) inside Debian's headless
+// Chromium (/usr/bin/chromium, driven by npm `playwright-core`) with software WebGL, renders each
+// once and prints one JSON line per file:
+//   {"file", "skinnedMeshes", "bones", "skins", "meshes", "instancedMeshes", "instances",
+//    "drawCalls", "triangles", "drawnPixels", "pixels"}
+// skinnedMeshes counts THREE.SkinnedMesh objects, bones the distinct THREE.Bone objects,
+// skins the distinct skeletons, instances the sum of InstancedMesh counts; drawCalls and
+// triangles come from renderer.info after one render; drawnPixels are the pixels of the
+// 256 x 256 picture whose colour differs from the background.
+// The files are served from a localhost HTTP server; the browser gets a fresh profile. With
+// RAMUS_THREE_SCREENSHOTS=1 the picture of each file is kept as FILE.three.png.
+//   node load_in_three.js FILE.glb...
+// Exit codes: 0 loaded every file, 1 a file failed to load or render, 2 usage,
+// 77 Chromium (or WebGL in it) cannot run here: the message on stderr says why.
+'use strict';
+const fs = require('fs');
+const http = require('http');
+const os = require('os');
+const path = require('path');
+
+const tools = path.join(__dirname, '..', '..', '..', 'tools', 'node_modules');
+const CHROMIUM = process.env.RAMUS_CHROMIUM || '/usr/bin/chromium';
+
+function cannotRun(why) {
+  console.error(`chromium cannot run: ${why}`);
+  process.exit(77);
+}
+
+let chromium;
+try {
+  ({ chromium } = require(path.join(tools, 'playwright-core')));
+} catch (e) {
+  console.error('playwright-core is not installed: run scripts/install-deps.sh (npm install in tools/)');
+  process.exit(2);
+}
+if (!fs.existsSync(path.join(tools, 'three', 'build', 'three.module.js'))) {
+  console.error('three is not installed: run scripts/install-deps.sh (npm install in tools/)');
+  process.exit(2);
+}
+if (!fs.existsSync(CHROMIUM)) cannotRun(`${CHROMIUM} does not exist (Debian package chromium)`);
+
+const files = process.argv.slice(2);
+if (files.length === 0) {
+  console.error('usage: load_in_three.js FILE.glb...');
+  process.exit(2);
+}
+
+const PAGE = `<!doctype html><html><head><meta charset="utf-8">
+<script type="importmap">{"imports": {"three": "/three/build/three.module.js",
+  "three/addons/": "/three/examples/jsm/"}}</script></head><body style="margin:0">
+<script type="module">
+import * as THREE from 'three';
+import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+window.loadAndRender = async (url) => {
+  const gltf = await new GLTFLoader().loadAsync(url);
+  const scene = new THREE.Scene();
+  const background = new THREE.Color(0x000000);
+  scene.background = background;
+  scene.add(new THREE.AmbientLight(0xffffff, 1.5));
+  const sun = new THREE.DirectionalLight(0xffffff, 2.0);
+  sun.position.set(1, 2, 3);
+  scene.add(sun);
+  scene.add(gltf.scene);
+  const bones = new Set(), skins = new Set();
+  let skinned = 0, meshes = 0, instanced = 0, instances = 0;
+  gltf.scene.updateMatrixWorld(true);
+  gltf.scene.traverse((o) => {
+    if (o.isBone) bones.add(o);
+    if (o.isMesh) {
+      meshes++;
+      o.frustumCulled = false;
+    }
+    if (o.isSkinnedMesh) {
+      skinned++;
+      skins.add(o.skeleton);
+      o.skeleton.update();
+    }
+    if (o.isInstancedMesh) {
+      instanced++;
+      instances += o.count;
+    }
+  });
+  // Bounds of what is drawn: skinned vertices where there are skins, instances where instanced.
+  const box = new THREE.Box3();
+  const v = new THREE.Vector3(), m = new THREE.Matrix4();
+  gltf.scene.traverse((o) => {
+    if (!o.isMesh) return;
+    const pos = o.geometry.attributes.position;
+    const copies = o.isInstancedMesh ? o.count : 1;
+    for (let c = 0; c < copies; c++) {
+      if (o.isInstancedMesh) o.getMatrixAt(c, m);
+      for (let i = 0; i < pos.count; i++) {
+        if (o.isSkinnedMesh) {
+          o.getVertexPosition(i, v);
+          v.applyMatrix4(o.matrixWorld);
+        } else {
+          v.fromBufferAttribute(pos, i);
+          if (o.isInstancedMesh) v.applyMatrix4(m);
+          v.applyMatrix4(o.matrixWorld);
+        }
+        box.expandByPoint(v);
+      }
+    }
+  });
+  const size = 256;
+  const canvas = document.createElement('canvas');
+  canvas.width = canvas.height = size;
+  document.body.appendChild(canvas);
+  const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
+  renderer.setPixelRatio(1);
+  renderer.setSize(size, size, false);
+  // Looking along +y with z up, far enough that the wider of the x and z extents fills 90% of
+  // the picture.
+  const centre = box.getCenter(new THREE.Vector3());
+  const extent = box.getSize(new THREE.Vector3());
+  const fov = 40;
+  const fit = Math.max(extent.x, extent.z, 1e-6) / 2 / Math.tan((fov / 2) * Math.PI / 180) / 0.9;
+  const distance = fit + extent.y / 2;
+  const camera = new THREE.PerspectiveCamera(fov, 1, distance * 0.01, distance * 4 + extent.y);
+  camera.position.copy(centre).add(new THREE.Vector3(0, -distance, 0));
+  camera.up.set(0, 0, 1);
+  camera.lookAt(centre);
+  renderer.info.autoReset = false;
+  renderer.info.reset();
+  renderer.render(scene, camera);
+  const gl = renderer.getContext();
+  const px = new Uint8Array(size * size * 4);
+  gl.readPixels(0, 0, size, size, gl.RGBA, gl.UNSIGNED_BYTE, px);
+  let drawn = 0;
+  for (let i = 0; i < size * size; i++) {
+    if (px[4 * i] > 8 || px[4 * i + 1] > 8 || px[4 * i + 2] > 8) drawn++;
+  }
+  const result = { skinnedMeshes: skinned, bones: bones.size, skins: skins.size, meshes,
+    instancedMeshes: instanced, instances, drawCalls: renderer.info.render.calls,
+    triangles: renderer.info.render.triangles, drawnPixels: drawn, pixels: size * size };
+  if (window.screenshotWanted) result.png = canvas.toDataURL('image/png');
+  renderer.dispose();
+  canvas.remove();
+  return result;
+};
+window.pageReady = true;
+</script></body></html>`;
+
+function serve() {
+  const roots = { '/three/': path.join(tools, 'three') + '/' };
+  const served = new Map(files.map((f, i) => [`/files/${i}${path.extname(f)}`, f]));
+  const server = http.createServer((req, res) => {
+    const url = decodeURIComponent(req.url.split('?')[0]);
+    let file = null;
+    if (url === '/' || url === '/index.html') {
+      res.writeHead(200, { 'Content-Type': 'text/html' });
+      res.end(PAGE);
+      return;
+    }
+    if (served.has(url)) file = served.get(url);
+    for (const [prefix, dir] of Object.entries(roots)) {
+      if (url.startsWith(prefix) && !url.includes('..')) file = dir + url.slice(prefix.length);
+    }
+    if (file === null || !fs.existsSync(file)) {
+      res.writeHead(404);
+      res.end();
+      return;
+    }
+    const type = file.endsWith('.js') ? 'text/javascript' : 'application/octet-stream';
+    res.writeHead(200, { 'Content-Type': type });
+    res.end(fs.readFileSync(file));
+  });
+  return new Promise((resolve) => server.listen(0, '127.0.0.1', () => resolve(server)));
+}
+
+(async () => {
+  for (const f of files) {
+    if (!fs.existsSync(f)) {
+      console.error(`no such file: ${f}`);
+      process.exit(2);
+    }
+  }
+  const server = await serve();
+  const port = server.address().port;
+  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'ramus-chromium-'));
+  let context;
+  try {
+    context = await chromium.launchPersistentContext(profile, {
+      executablePath: CHROMIUM,
+      headless: true,
+      timeout: 60000,
+      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
+        '--disable-background-networking', '--disable-component-update', '--disable-sync',
+        '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
+    });
+  } catch (e) {
+    server.close();
+    fs.rmSync(profile, { recursive: true, force: true });
+    cannotRun(String(e.message || e).split('\n')[0]);
+  }
+  let status = 0;
+  try {
+    const page = await context.newPage();
+    const errors = [];
+    page.on('pageerror', (e) => errors.push(String(e)));
+    await page.goto(`http://127.0.0.1:${port}/index.html`);
+    await page.waitForFunction(() => window.pageReady === true, null, { timeout: 60000 });
+    const webgl = await page.evaluate(() => !!document.createElement('canvas').getContext('webgl2'));
+    if (!webgl) cannotRun('no WebGL 2 context in headless Chromium');
+    for (let i = 0; i < files.length; i++) {
+      try {
+        const url = `/files/${i}${path.extname(files[i])}`;
+        if (process.env.RAMUS_THREE_SCREENSHOTS) await page.evaluate(() => { window.screenshotWanted = true; });
+        const r = await page.evaluate((u) => window.loadAndRender(u), url);
+        if (r.png) {
+          // RAMUS_THREE_SCREENSHOTS=1 keeps what three.js drew beside each file (FILE.three.png).
+          fs.writeFileSync(files[i] + '.three.png', Buffer.from(r.png.split(',')[1], 'base64'));
+          delete r.png;
+        }
+        console.log(JSON.stringify({ file: files[i], ...r }));
+      } catch (e) {
+        console.log(JSON.stringify({ file: files[i], error: String(e.message || e) }));
+        status = 1;
+      }
+    }
+    if (errors.length) {
+      console.error(`page errors: ${errors.join('; ')}`);
+      status = 1;
+    }
+  } finally {
+    await context.close();
+    server.close();
+    fs.rmSync(profile, { recursive: true, force: true });
+  }
+  process.exit(status);
+})().catch((e) => {
+  console.error(String(e.stack || e));
+  process.exit(1);
+});
