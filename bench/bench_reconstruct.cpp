@@ -1,21 +1,29 @@
 // Reconstruction benchmark and accuracy report (docs/reconstruction.md):
-//   bench_reconstruct accuracy GRAMMAR...   grammar tree -> simulated scans (1 and 3 stations,
-//                                            noise 0.3% of the height) -> reconstruct -> scores
-//   bench_reconstruct time SCAN...          reconstruction time of real scans
-//   bench_reconstruct scene GRAMMAR N       N trees of GRAMMAR scanned into one ~1M-point cloud
-// Prints one line per run and the peak resident memory at the end.
+//   bench_reconstruct accuracy [FLAGS] GRAMMAR...  grammar tree -> simulated scans (1 and 3
+//                                            stations, range noise 5 mm) -> reconstruct -> scores
+//   bench_reconstruct time [FLAGS] SCAN...  reconstruction time of real scans
+//   bench_reconstruct scene GRAMMAR N [--opt k=v]...  N trees of GRAMMAR scanned into one
+//                                            ~1M-point cloud
+// FLAGS (before the files they apply to): --noise S (metres), --density D, --leaves (scan the
+// leaf cards too), --opt name=value (a ReconstructOptions field, for parameter sweeps: voxel,
+// voxel_spacings, voxel_floor, neighbours, max_gap, contraction, iterations, overlap, min_branch,
+// min_cylinder, ground_band, terrain), --stations N (only N stations instead of 1 and 3), --dump
+// PREFIX (write the truth and the reconstruction as skeleton JSON). Prints one line per run and the
+// peak resident memory at the end.
 #include <sys/resource.h>
 
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <string>
 
 #include "backends/mesh/tree_mesh.h"
 #include "backends/scanner/harness.h"
 #include "compiler/grow.h"
 #include "formats/point_cloud_io.h"
+#include "formats/skeleton_json.h"
 
 using namespace ramus;
 
@@ -29,30 +37,75 @@ Skeleton grow(const std::string& path, std::uint64_t seed = 0) {
   return grow_file(path, o, sources, diags);
 }
 
-void accuracy(const std::string& path) {
+// Options of a parameter sweep: --opt name=value.
+void set_option(ReconstructOptions& o, const std::string& kv) {
+  const auto eq = kv.find('=');
+  if (eq == std::string::npos) throw std::runtime_error("--opt expects name=value, got " + kv);
+  const std::string k = kv.substr(0, eq);
+  const double v = std::atof(kv.c_str() + eq + 1);
+  if (k == "voxel")
+    o.voxel_size = v;
+  else if (k == "voxel_spacings")
+    o.voxel_spacings = v;
+  else if (k == "voxel_floor")
+    o.voxel_height_floor = v;
+  else if (k == "neighbours")
+    o.neighbours = int(v);
+  else if (k == "max_gap")
+    o.max_gap = v;
+  else if (k == "contraction")
+    o.contraction_steps = int(v);
+  else if (k == "iterations")
+    o.max_iterations = int(v);
+  else if (k == "overlap")
+    o.overlap_fraction = v;
+  else if (k == "min_branch")
+    o.min_branch_length = v;
+  else if (k == "min_cylinder")
+    o.min_cylinder_radius = v;
+  else if (k == "ground_band")
+    o.ground_band = v;
+  else if (k == "terrain")
+    o.remove_terrain = v != 0;
+  else
+    throw std::runtime_error("unknown option " + k);
+}
+
+ReconstructOptions g_options;
+std::vector<int> g_stations = {1, 3};  // --stations N: only N stations
+std::string g_dump;  // --dump PREFIX: writes PREFIX<tree>-<stations>.truth.json / .rec.json
+
+void accuracy(const std::string& path, const scanner::HarnessCase& base) {
   const Skeleton t = grow(path);
-  for (int stations : {1, 3}) {
-    scanner::HarnessCase c;
+  for (int stations : g_stations) {
+    scanner::HarnessCase c = base;
     c.stations = stations;
-    const scanner::HarnessResult r = scanner::run_harness(t, c);
+    const scanner::HarnessResult r = scanner::run_harness(t, c, g_options);
     const SkeletonComparison& a = r.at_radius;
-    std::printf("%s stations=%d points=%zu trees=%zu precision(2r)=%.3f recall(2r)=%.3f "
-                "precision(1%%h)=%.3f recall(1%%h)=%.3f chamfer=%.4f length=%.3f "
-                "tips=%zu/%zu time=%.2fs\n",
-                path.c_str(), stations, r.points, r.trees, a.precision, a.recall,
-                a.precision_distance, a.recall_distance, a.chamfer, a.length_ratio,
-                a.branches_reconstructed, a.branches_truth, r.seconds);
+    if (!g_dump.empty()) {
+      const std::string stem =
+          g_dump + std::filesystem::path(path).stem().string() + "-" + std::to_string(stations);
+      write_skeleton_json(stem + ".truth.json", t);
+      if (!r.reconstructed.empty()) write_skeleton_json(stem + ".rec.json", r.reconstructed[0]);
+    }
+    std::printf(
+        "%s stations=%d points=%zu trees=%zu precision(2r)=%.3f recall(2r)=%.3f "
+        "precision(1%%h)=%.3f recall(1%%h)=%.3f chamfer=%.4f length=%.3f "
+        "tips=%zu/%zu time=%.2fs\n",
+        path.c_str(), stations, r.points, r.trees, a.precision, a.recall, a.precision_distance,
+        a.recall_distance, a.chamfer, a.length_ratio, a.branches_reconstructed, a.branches_truth,
+        r.seconds);
   }
 }
 
 void time_scan(const std::string& path) {
   const PointCloud cloud = read_point_cloud(path);
-  const ReconstructResult r = reconstruct(cloud);
-  std::printf("%s points=%zu trees=%zu nodes=%zu bases=%.3f graph=%.3f forest=%.3f refine=%.3f "
-              "inflate=%.3f total=%.3fs\n",
-              path.c_str(), cloud.size(), r.trees.size(), r.counts.skeleton_nodes,
-              r.timings.bases, r.timings.graph, r.timings.forest, r.timings.refine,
-              r.timings.inflate, r.timings.total);
+  const ReconstructResult r = reconstruct(cloud, g_options);
+  std::printf(
+      "%s points=%zu trees=%zu nodes=%zu bases=%.3f graph=%.3f forest=%.3f refine=%.3f "
+      "inflate=%.3f total=%.3fs\n",
+      path.c_str(), cloud.size(), r.trees.size(), r.counts.skeleton_nodes, r.timings.bases,
+      r.timings.graph, r.timings.forest, r.timings.refine, r.timings.inflate, r.timings.total);
 }
 
 void scene(const std::string& path, int n) {
@@ -79,12 +132,12 @@ void scene(const std::string& path, int n) {
   so.noise = 0.003 * height;
   so.density = 6000;
   const scanner::ScanResult scan = scanner::scan_triangles(vertices, indices, so);
-  const ReconstructResult r = reconstruct(scan.cloud);
-  std::printf("scene of %d x %s: points=%zu trees=%zu nodes=%zu bases=%.3f graph=%.3f "
-              "forest=%.3f refine=%.3f inflate=%.3f total=%.3fs\n",
-              n, path.c_str(), scan.cloud.size(), r.trees.size(), r.counts.skeleton_nodes,
-              r.timings.bases, r.timings.graph, r.timings.forest, r.timings.refine,
-              r.timings.inflate, r.timings.total);
+  const ReconstructResult r = reconstruct(scan.cloud, g_options);
+  std::printf(
+      "scene of %d x %s: points=%zu trees=%zu nodes=%zu bases=%.3f graph=%.3f "
+      "forest=%.3f refine=%.3f inflate=%.3f total=%.3fs\n",
+      n, path.c_str(), scan.cloud.size(), r.trees.size(), r.counts.skeleton_nodes, r.timings.bases,
+      r.timings.graph, r.timings.forest, r.timings.refine, r.timings.inflate, r.timings.total);
 }
 
 }  // namespace
@@ -97,9 +150,33 @@ int main(int argc, char** argv) {
   try {
     const std::string mode = argv[1];
     if (mode == "scene") {
+      for (int i = 4; i + 1 < argc; i += 2) {
+        if (std::strcmp(argv[i], "--opt") != 0) throw std::runtime_error("scene takes --opt only");
+        set_option(g_options, argv[i + 1]);
+      }
       scene(argv[2], argc > 3 ? std::atoi(argv[3]) : 4);
     } else {
-      for (int i = 2; i < argc; ++i) mode == "time" ? time_scan(argv[i]) : accuracy(argv[i]);
+      scanner::HarnessCase c;
+      for (int i = 2; i < argc; ++i) {
+        const std::string arg = argv[i];
+        if (arg == "--noise" && i + 1 < argc) {
+          c.noise = std::atof(argv[++i]);
+        } else if (arg == "--density" && i + 1 < argc) {
+          c.density = std::atof(argv[++i]);
+        } else if (arg == "--opt" && i + 1 < argc) {
+          set_option(g_options, argv[++i]);
+        } else if (arg == "--stations" && i + 1 < argc) {
+          g_stations = {std::atoi(argv[++i])};
+        } else if (arg == "--dump" && i + 1 < argc) {
+          g_dump = argv[++i];
+        } else if (arg == "--leaves") {
+          c.leaves = true;
+        } else if (mode == "time") {
+          time_scan(arg);
+        } else {
+          accuracy(arg, c);
+        }
+      }
     }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "bench_reconstruct: %s\n", e.what());

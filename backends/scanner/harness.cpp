@@ -25,7 +25,8 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
   const double h = std::max(hi.z - lo.z, 1e-6);
   ScanOptions so;
   so.from = stations_around(truth, c.stations);
-  so.noise = c.noise * h;
+  so.noise = c.noise;
+  so.leaves = c.leaves;
   so.density = c.density;
   so.seed = c.seed;
   const ScanResult scan = scan_skeleton(truth, so);
@@ -39,8 +40,12 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
   co.radius_factor = 2.0;
   co.distance = 0.01 * h;
   co.spacing = 0.002 * h;
-  co.min_radius = 0.5 * rec.voxel_size;
+  // Truth radii are floored at half the scan's point spacing on a surface facing the station at
+  // the tree's distance: no scan locates a thinner twig better than that. The floor depends on
+  // the scan only, never on the reconstruction (a coarser voxel must not loosen the score).
+  co.min_radius = 0.5 / std::sqrt(c.density);
   r.at_radius = compare_skeletons({truth}, rec.trees, co);
+  r.reconstructed = rec.trees;
   return r;
 }
 

@@ -14,9 +14,12 @@
 namespace ramus::scanner {
 
 struct HarnessCase {
-  int stations = 1;        // 1 or more stations evenly spaced around the tree
-  double noise = 0.003;    // range noise, as a fraction of the tree's height
-  double density = 3000;   // see ScanOptions::density
+  int stations = 1;  // 1 or more stations evenly spaced around the tree
+  // Standard deviation of the range noise in the tree's units (metres for the bundled grammars).
+  // 5 mm is the range precision of survey-grade terrestrial scanners at tens of metres.
+  double noise = 0.005;
+  bool leaves = false;    // also scan the leaf cards (ScanOptions::leaves)
+  double density = 3000;  // see ScanOptions::density
   std::uint64_t seed = 1;
 };
 
@@ -25,6 +28,7 @@ struct HarnessResult {
   std::size_t trees = 0;
   SkeletonComparison at_radius;  // radius-relative and fixed-distance scores
   double seconds = 0;            // reconstruction only
+  std::vector<Skeleton> reconstructed;
 };
 
 // Stations around the skeleton's base at 1.5 tree heights, tripod height, evenly spaced in
@@ -32,7 +36,7 @@ struct HarnessResult {
 std::vector<Vec3> stations_around(const Skeleton& tree, int count);
 
 // Scans `truth`, reconstructs, compares. The fixed distance is 1% of the tree's height; truth
-// radii are floored at half a voxel (thinner twigs cannot be resolved by the voxel grid).
+// radii are floored at half the scan's point spacing (1 / sqrt(density)) at the tree.
 HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
                           const ReconstructOptions& options = {});
 

@@ -26,39 +26,45 @@ namespace ramus {
 // Lengths are in the cloud's units (metres for real scans). 0 means "choose from the data".
 struct ReconstructOptions {
   // Points are merged on a voxel grid of this edge length before the graph is built.
-  double voxel_size = 0;         // auto: from the median point spacing and the cloud's height
-  int neighbours = 10;           // k of the k-nearest-neighbour graph (4.1)
-  double max_gap = 0;            // largest gap bridged between graph components; auto: 8% of height
-  int contraction_steps = 20;    // neighbour-mean steps that draw bark samples towards branch axes
+  double voxel_size = 0;  // auto: from the median point spacing and the cloud's height
+  // Auto voxel: this many median point spacings, but at least this fraction of the height.
+  // 1 and 1/1000, with contraction_steps = 10 and max_iterations = 2, resolve thin twigs much
+  // better (docs/reconstruction.md, Accuracy) but leave parallel paths on thick branches.
+  double voxel_spacings = 2.5;
+  double voxel_height_floor = 1.0 / 400;
+  int neighbours = 10;         // k of the k-nearest-neighbour graph (4.1)
+  double max_gap = 0;          // largest gap bridged between graph components; auto: 8% of height
+  int contraction_steps = 20;  // neighbour-mean steps that draw bark samples towards branch axes
 
   // Tree bases (4.1).
-  bool remove_terrain = true;    // drop the lowest layer of points (the ground) before the graph
-  double ground_band = 0;        // thickness of the terrain layer; auto: 1.5% of height (>= voxel)
-  double base_cell = 0;          // 2D density grid cell; auto: 1% of height (>= voxel)
-  double base_slab = 0;          // height of the slab above ground whose density finds trunks;
-                                 // auto: 10% of the cloud's height
-  double max_trunk_width = 0;    // wider dense clusters (walls, hedges) are not trees; auto: 30%
-                                 // of the height of the points standing above the cluster
-  double min_tree_separation = 0; // weaker base clusters nearer than this to a stronger one are
-                                 // low branches of its tree; auto: 10% of the height
-  std::vector<Vec3> roots;       // world positions of tree bases; when set, base detection is skipped
+  bool remove_terrain = true;  // drop the lowest layer of points (the ground) before the graph
+  double ground_band = 0;      // thickness of the terrain layer; auto: 1.5% of height (>= voxel)
+  double base_cell = 0;        // 2D density grid cell; auto: 1% of height (>= voxel)
+  double base_slab = 0;        // height of the slab above ground whose density finds trunks;
+                               // auto: 10% of the cloud's height
+  double max_trunk_width = 0;  // wider dense clusters (walls, hedges) are not trees; auto: 30%
+                               // of the height of the points standing above the cluster
+  double min_tree_separation = 0;  // weaker base clusters nearer than this to a stronger one are
+                                   // low branches of its tree; auto: 10% of the height
+  std::vector<Vec3> roots;  // world positions of tree bases; when set, base detection is skipped
 
   // Refinement (4.2).
-  int max_iterations = 3;        // Dijkstra + refinement rounds at most (paper: 2-3 suffice)
-  double convergence = 0.01;     // stop when fewer than this fraction of parents change
+  int max_iterations = 3;          // Dijkstra + refinement rounds at most (paper: 2-3 suffice)
+  double convergence = 0.01;       // stop when fewer than this fraction of parents change
   double reweight_strength = 0.5;  // aligned edges cost (1 - strength |cos|) of their weight
 
   // Inflation (4.3).
   double allometry_exponent = 2.5;  // r_parent^e / r_child^e = c_parent / c_child (Eq. 5)
   double overlap_fraction = 0.5;    // collapse an edge whose cylinder is covered more than this
-  double min_branch_length = 0;     // drop leaf twigs shorter than this; auto: 10 voxels
+  double min_branch_length = 0;     // drop leaf twigs shorter than this; auto: 10 voxels,
+                                    // at least 2% of the height
   double min_cylinder_radius = 0;   // cylinders are at least this thick when overlaps are
                                     // measured (zig-zags across thin branches); auto: 2 voxels
 
   // Leaves (4.3, fine geometry synthesis).
   bool leaves = true;
   int min_leaves = 20, max_leaves = 50;
-  double leaf_sphere = 0;           // radius of the sphere leaves are scattered in; auto: 2 voxels
+  double leaf_sphere = 0;  // radius of the sphere leaves are scattered in; auto: 2 voxels
   std::uint64_t seed = 1;
 };
 
@@ -68,23 +74,23 @@ struct ReconstructTimings {
 
 struct ReconstructCounts {
   std::size_t input_points = 0;
-  std::size_t dropped_points = 0;   // non-finite coordinates
+  std::size_t dropped_points = 0;  // non-finite coordinates
   std::size_t terrain_points = 0;
   std::size_t graph_vertices = 0;
   std::size_t graph_edges = 0;
-  std::size_t bridged_gaps = 0;     // components joined through their closest pair
-  std::size_t unreached_points = 0; // farther than max_gap from every tree
-  int iterations = 0;               // Dijkstra + refinement rounds run
-  std::size_t skeleton_nodes = 0;   // over all trees
+  std::size_t bridged_gaps = 0;      // components joined through their closest pair
+  std::size_t unreached_points = 0;  // farther than max_gap from every tree
+  int iterations = 0;                // Dijkstra + refinement rounds run
+  std::size_t skeleton_nodes = 0;    // over all trees
 };
 
 struct ReconstructResult {
-  std::vector<Skeleton> trees;           // world coordinates, one per tree base
-  std::vector<std::uint32_t> point_tree; // tree of every input point; kNoTree if none
-  double voxel_size = 0;                 // the voxel size used
+  std::vector<Skeleton> trees;            // world coordinates, one per tree base
+  std::vector<std::uint32_t> point_tree;  // tree of every input point; kNoTree if none
+  double voxel_size = 0;                  // the voxel size used
   ReconstructTimings timings;
   ReconstructCounts counts;
-  std::vector<std::string> notes;        // why a result is empty, what was dropped
+  std::vector<std::string> notes;  // why a result is empty, what was dropped
   static constexpr std::uint32_t kNoTree = 0xffffffffu;
 };
 

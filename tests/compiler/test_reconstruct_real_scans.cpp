@@ -1,6 +1,5 @@
-// Every readable real scan in ../shared/data/ reconstructs into at least one valid skeleton.
+// Every readable real scan in ../shared/data/ reconstructs into one valid skeleton.
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 
 #include "compiler/infer/reconstruct.h"
@@ -8,7 +7,7 @@
 
 using namespace ramus;
 
-TEST_CASE("reconstruct real scans: every readable scan gives a valid skeleton", "[reconstruct]") {
+TEST_CASE("reconstruct real scans: every readable scan gives one valid skeleton", "[reconstruct]") {
   const std::filesystem::path dir = std::filesystem::path(RAMUS_SHARED_DIR) / "data";
   if (!std::filesystem::exists(dir)) return;  // the shared data is not part of every checkout
   std::vector<std::filesystem::path> files;
@@ -24,7 +23,9 @@ TEST_CASE("reconstruct real scans: every readable scan gives a valid skeleton", 
     ReconstructOptions o;
     o.leaves = false;
     const ReconstructResult r = reconstruct(cloud, o);
-    REQUIRE(r.trees.size() >= 1);
+    // Every readable scan there holds one tree (SOURCES.md; adtree_ahn3_delft.xyz is one tree
+    // from airborne LiDAR): the base finder must not split it.
+    REQUIRE(r.trees.size() == 1);
     for (const Skeleton& s : r.trees) {
       CHECK(s.validate().empty());
       CHECK(s.size() >= 5);

@@ -19,9 +19,10 @@ struct BaseParams {
 };
 
 struct Bases {
-  std::vector<std::uint8_t> terrain;  // per point: 1 if removed as terrain
-  std::vector<Eigen::Vector3d> roots; // one base position per tree (relative coordinates)
-  std::string note;                   // why there is no root, when there is none
+  std::vector<std::uint8_t> terrain;   // per point: 1 if removed as terrain
+  std::vector<Eigen::Vector3d> roots;  // one base position per tree (relative coordinates)
+  std::vector<double> reach;           // per root: half the width of its trunk's footprint
+  std::string note;                    // why there is no root, when there is none
 };
 
 // Only points with keep[i] != 0 take part.

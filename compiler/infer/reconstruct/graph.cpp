@@ -1,5 +1,8 @@
 #include "compiler/infer/reconstruct/graph.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -84,12 +87,20 @@ void link_nearest(Graph& graph, int k) {
   if (graph.size() < 2) return;
   PointIndex index(graph.pos);
   const std::size_t kk = std::min<std::size_t>(std::size_t(k) + 1, graph.size());
-  std::vector<std::uint32_t> ids(kk);
-  std::vector<double> d2(kk);
+  // The queries run in parallel into fixed slots; edges are then added in vertex order, so the
+  // graph does not depend on the schedule.
+  std::vector<std::uint32_t> ids(graph.size() * kk, kNone);
+  std::vector<double> d2(graph.size() * kk);
+  tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, std::uint32_t(graph.size()), 1024),
+                    [&](const tbb::blocked_range<std::uint32_t>& r) {
+                      for (std::uint32_t v = r.begin(); v != r.end(); ++v) {
+                        index.knn(graph.pos[v], kk, &ids[v * kk], &d2[v * kk]);
+                      }
+                    });
   for (std::uint32_t v = 0; v < graph.size(); ++v) {
-    std::size_t n = index.knn(graph.pos[v], kk, ids.data(), d2.data());
-    for (std::size_t j = 0; j < n; ++j) {
-      if (ids[j] != v) graph.add_edge(v, ids[j], d2[j]);
+    for (std::size_t j = 0; j < kk; ++j) {
+      const std::uint32_t u = ids[v * kk + j];
+      if (u != kNone && u != v) graph.add_edge(v, u, d2[v * kk + j]);
     }
   }
 }
@@ -97,11 +108,14 @@ void link_nearest(Graph& graph, int k) {
 void contract(Graph& graph, int steps) {
   std::vector<Eigen::Vector3d> next(graph.size());
   for (int s = 0; s < steps; ++s) {
-    for (std::uint32_t v = 0; v < graph.size(); ++v) {
-      Eigen::Vector3d sum = graph.pos[v];
-      for (const Arc& a : graph.adj[v]) sum += graph.pos[a.to];
-      next[v] = sum / double(graph.adj[v].size() + 1);
-    }
+    tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, std::uint32_t(graph.size()), 4096),
+                      [&](const tbb::blocked_range<std::uint32_t>& r) {
+                        for (std::uint32_t v = r.begin(); v != r.end(); ++v) {
+                          Eigen::Vector3d sum = graph.pos[v];
+                          for (const Arc& a : graph.adj[v]) sum += graph.pos[a.to];
+                          next[v] = sum / double(graph.adj[v].size() + 1);
+                        }
+                      });
     graph.pos.swap(next);
   }
   // Edge weights follow the moved vertices.

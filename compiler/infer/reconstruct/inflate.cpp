@@ -75,6 +75,7 @@ struct Editable {
     return {b.pos[u], b.pos[v], r, r};
   }
   double min_radius = 0;
+  double tolerance = 0;  // a degree-2 collapse may move the branch by this much at least
   // Collapses edge (u, a), a a child of u, into u at the weighted midpoint (4.3).
   void merge(std::uint32_t u, std::uint32_t a, bool keep_a_position = false) {
     // The midpoint is weighted by the points each vertex stands for, so a merged vertex is the
@@ -129,6 +130,29 @@ std::size_t remove_covered(Editable& e, std::uint32_t u, double overlap) {
   return merged;
 }
 
+double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                              const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double l2 = ab.squaredNorm();
+  const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+  return (p - a - t * ab).norm();
+}
+
+// Whether replacing v and w by one vertex at `merged` keeps the branch where its samples are:
+// both old positions stay within `tolerance` of the new polyline u -> merged -> w's children.
+// Without this, a run of collapses along a curved branch (a weeping whip, an arching limb)
+// replaces the curve by its chord, which leaves the points it stands for.
+bool collapse_keeps_shape(const Editable& e, std::uint32_t u, std::uint32_t v, std::uint32_t w,
+                          const Eigen::Vector3d& merged, double tolerance) {
+  for (const Eigen::Vector3d& old : {e.b.pos[v], e.b.pos[w]}) {
+    double d = point_segment_distance(old, e.b.pos[u], merged);
+    for (std::uint32_t x : e.ch[w])
+      d = std::min(d, point_segment_distance(old, merged, e.b.pos[x]));
+    if (d > tolerance) return false;
+  }
+  return true;
+}
+
 // Degree-2 collapse: v with parent u and one child w; (v, w) goes when the extension of (u, v)
 // beyond v covers more than half of it. Tips are kept so that branches keep their length.
 std::size_t collapse_degree2(Editable& e, std::uint32_t v, double overlap) {
@@ -141,7 +165,13 @@ std::size_t collapse_degree2(Editable& e, std::uint32_t v, double overlap) {
     if (covered_fraction(e.cyl(v, w), {virt}) <= overlap) break;
     // A branching w keeps its place (v simply disappears from a straight run); otherwise
     // branch points would creep down the trunk one collapse at a time.
-    e.merge(v, w, e.ch[w].size() != 1);
+    const bool keep_w = e.ch[w].size() != 1;
+    const double mv = e.b.mass[v], mw = e.b.mass[w];
+    const Eigen::Vector3d target =
+        keep_w ? e.b.pos[w]
+               : Eigen::Vector3d((mv * e.b.pos[v] + mw * e.b.pos[w]) / std::max(mv + mw, 1e-300));
+    if (!collapse_keeps_shape(e, u, v, w, target, std::max(e.b.radius[v], e.tolerance))) break;
+    e.merge(v, w, keep_w);
     ++merged;
   }
   return merged;
@@ -229,7 +259,8 @@ double trunk_radius(const std::vector<Eigen::Vector3d>& samples, const Eigen::Ve
   int n = 0;
   for (const Eigen::Vector3d& p : samples) {
     const double dx = p.x() - base.x(), dy = p.y() - base.y();
-    if (p.z() < base.z() || p.z() > base.z() + slab || dx * dx + dy * dy > 0.25 * max_width * max_width) {
+    if (p.z() < base.z() || p.z() > base.z() + slab ||
+        dx * dx + dy * dy > 0.25 * max_width * max_width) {
       continue;
     }
     const Eigen::Vector3d row(dx, dy, 1.0);
@@ -244,10 +275,11 @@ double trunk_radius(const std::vector<Eigen::Vector3d>& samples, const Eigen::Ve
   return std::isfinite(r) && r < 0.5 * max_width ? r : 0.0;
 }
 
-std::size_t collapse_overlaps(Bsg& bsg, double overlap, double min_radius) {
+std::size_t collapse_overlaps(Bsg& bsg, double overlap, double min_radius, double tolerance) {
   if (bsg.size() < 2) return 0;
   Editable e{bsg, children_of(bsg.parent), std::vector<std::uint8_t>(bsg.size(), 1)};
   e.min_radius = min_radius;
+  e.tolerance = tolerance;
   std::size_t merged = 0;
   for (std::uint32_t u = 0; u < bsg.size(); ++u) {
     if (!e.alive[u]) continue;
@@ -296,12 +328,12 @@ int inflate(Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
                              ? 0.0
                              : mean_sample_distance(bsg, samples, counts, params.edge_sample);
     assign_radii(bsg, d_avg, params.exponent, params.root_radius);
-    if (collapse_overlaps(bsg, params.overlap, params.min_radius) == 0) break;
+    if (collapse_overlaps(bsg, params.overlap, params.min_radius, params.tolerance) == 0) break;
   }
   prune_twigs(bsg, params.min_twig);
   importance_weights(bsg, params.own_weight);
-  assign_radii(bsg, mean_sample_distance(bsg, samples, counts, params.edge_sample),
-               params.exponent, params.root_radius);
+  assign_radii(bsg, mean_sample_distance(bsg, samples, counts, params.edge_sample), params.exponent,
+               params.root_radius);
   return rounds;
 }
 

@@ -17,6 +17,7 @@ struct InflateParams {
   double min_radius = 0;   // cylinders are at least this thick in the overlap tests
   double min_twig = 0;     // twigs shorter than this are pruned after clustering
   double root_radius = 0;  // measured trunk radius at the base (0: unknown, use d_avg alone)
+  double tolerance = 0;    // shape tolerance of degree-2 collapses (at least the radius)
 };
 
 // The trunk radius at the base: an algebraic (Kasa) circle fit to the horizontal positions of
@@ -34,8 +35,9 @@ double mean_sample_distance(const Bsg& bsg, const std::vector<Eigen::Vector3d>& 
 void assign_radii(Bsg& bsg, double d_avg, double exponent, double root_radius = 0);
 
 // One sweep of edge removal and degree-2 collapse; returns the number of edges collapsed.
-// Cylinders thinner than min_radius are widened to it for the overlap test.
-std::size_t collapse_overlaps(Bsg& bsg, double overlap, double min_radius);
+// Cylinders thinner than min_radius are widened to it for the overlap test. A degree-2 collapse
+// must keep both removed positions within max(radius, tolerance) of the new polyline.
+std::size_t collapse_overlaps(Bsg& bsg, double overlap, double min_radius, double tolerance = 0);
 
 // Removes twigs (leaf chains from a fork) shorter than min_length: scan noise that survived
 // the clustering. Returns the number of vertices removed.
