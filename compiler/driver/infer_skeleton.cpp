@@ -1,10 +1,130 @@
-// ramus infer --method skeleton (being written).
+// ramus infer INPUT -o OUT.ramus --method skeleton [--max-rules N] [--clusters K]
+//                   [--max-order O] [--tree-index T] [--merge alpha,beta]
+// Skeleton -> clustered stochastic parametric L-system (docs/skeleton-inference.md). INPUT is a
+// scan (reconstructed first), a skeleton file (.json) or a grammar (.ramus, grown with --seed).
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+
 #include "compiler/driver/infer_methods.h"
+#include "compiler/driver/skeleton_source.h"
+#include "compiler/infer/merge/branch_merge.h"
+#include "compiler/infer/skeleton/skeleton_grammar.h"
+#include "core/atomic_file.h"
 
 namespace ramus::cli {
 
-InferRunner add_infer_skeleton_options(CLI::App&, const GlobalOptions&) {
-  return [](const InferCommonArgs&) -> int { throw UserError("--method skeleton is not available yet"); };
+namespace {
+
+struct SkeletonInferArgs {
+  int max_rules = 32;
+  int clusters = 4;
+  int max_order = 3;
+  int tree_index = -1;
+  int calibration_seeds = 4;
+  std::string merge;  // "alpha,beta" in degrees; empty: no merging
+};
+
+merge::MergeOptions parse_merge(const std::string& text) {
+  const auto comma = text.find(',');
+  merge::MergeOptions o;
+  try {
+    if (comma == std::string::npos) throw std::invalid_argument(text);
+    std::size_t used = 0;
+    o.alpha_deg = std::stod(text.substr(0, comma), &used);
+    if (used != comma) throw std::invalid_argument(text);
+    const std::string beta = text.substr(comma + 1);
+    o.beta_deg = std::stod(beta, &used);
+    if (used != beta.size()) throw std::invalid_argument(text);
+  } catch (const std::exception&) {
+    throw UserError("--merge takes two angles in degrees, alpha,beta (e.g. 10,15); got '" + text +
+                    "'");
+  }
+  if (!(o.alpha_deg >= 0) || !(o.beta_deg >= 0)) {
+    throw UserError("--merge angles must be non-negative numbers; got '" + text + "'");
+  }
+  return o;
+}
+
+int run_skeleton_infer(const InferCommonArgs& common, const SkeletonInferArgs& a,
+                       const GlobalOptions& global) {
+  SkeletonSourceOptions so;
+  so.first_seed = common.seed;  // a grammar (.ramus) is grown once with this seed
+  so.tree_index = a.tree_index;
+  so.quiet = global.quiet;
+  Skeleton skeleton = std::move(load_skeleton_source(common.input, so).front());
+  if (!a.merge.empty()) {
+    const merge::MergeOptions mo = parse_merge(a.merge);
+    try {
+      const merge::MergeStats ms = merge::merge_branches(skeleton, mo);
+      if (!global.quiet) {
+        std::fprintf(stderr,
+                     "ramus: merged branches: %zu -> %zu nodes (%zu vertical, %zu horizontal)\n",
+                     ms.nodes_before, ms.nodes_after, ms.vertical_merges, ms.horizontal_merges);
+      }
+    } catch (const std::invalid_argument& e) {
+      throw UserError(std::string("--merge: ") + e.what());
+    }
+  }
+  skeleton_infer::GrammarOptions go;
+  go.max_rules = a.max_rules;
+  go.cluster.max_clusters = a.clusters;
+  go.cluster.max_order = a.max_order;
+  go.cluster.seed = common.seed;
+  go.calibration_seeds = a.calibration_seeds;
+  go.source_name = std::filesystem::path(common.input).filename().string();
+  skeleton_infer::InferredGrammar g;
+  try {
+    g = skeleton_infer::infer_grammar(skeleton, go);
+  } catch (const skeleton_infer::ExtractError& e) {
+    throw UserError(common.input + ": invalid skeleton: " + e.what());
+  } catch (const skeleton_infer::InferError& e) {
+    throw UserError(common.input + ": " + e.what());
+  }
+  try {
+    write_file_atomically(common.output, g.text);
+  } catch (const WriteError& e) {
+    throw UserError(e.what());
+  }
+  if (!global.quiet) {
+    std::printf(
+        "%s: %zu productions, %zu alternatives from %zu internodes (%zu branch nodes), "
+        "derive %d, tortuosity %.3f, tip shift %.3f\n",
+        common.output.c_str(), g.productions, g.alternatives, g.internodes, g.branch_nodes,
+        g.derive, g.tortuosity, g.tip_shift);
+    for (const auto& grp : g.groups) {
+      std::printf("  order %u%s arity %u: %zu rules -> %zu cluster(s)\n", unsigned(grp.order),
+                  grp.order == a.max_order ? "+" : "", grp.arity, grp.count, grp.clusters.size());
+    }
+  }
+  return 0;
+}
+
+}  // namespace
+
+InferRunner add_infer_skeleton_options(CLI::App& cmd, const GlobalOptions& global) {
+  auto a = std::make_shared<SkeletonInferArgs>();
+  cmd.add_option("--max-rules", a->max_rules,
+                 "skeleton: most stochastic alternatives in the grammar (default 32)")
+      ->check(CLI::Range(2, 1000));
+  cmd.add_option("--clusters", a->clusters,
+                 "skeleton: most clusters per order and arity, chosen by silhouette (default 4)")
+      ->check(CLI::Range(1, 64));
+  cmd.add_option("--max-order", a->max_order,
+                 "skeleton: branch orders from this one on share productions (default 3)")
+      ->check(CLI::Range(0, 100));
+  cmd.add_option("--tree-index", a->tree_index,
+                 "skeleton: the tree of the scan to use (default: the one with the most length)")
+      ->check(CLI::NonNegativeNumber);
+  cmd.add_option("--calibrate", a->calibration_seeds,
+                 "skeleton: fit the tip hazards to the input's total length over N grown seeds "
+                 "(default 4; 0: off)")
+      ->check(CLI::Range(0, 100));
+  cmd.add_option("--merge", a->merge,
+                 "skeleton: merge branches first, alpha,beta in degrees (vertical, horizontal)");
+  return [a, &global](const InferCommonArgs& common) {
+    return run_skeleton_infer(common, *a, global);
+  };
 }
 
 }  // namespace ramus::cli

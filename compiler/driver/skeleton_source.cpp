@@ -1,0 +1,83 @@
+#include "compiler/driver/skeleton_source.h"
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+
+#include "compiler/driver/command.h"
+#include "compiler/driver/grow_args.h"
+#include "compiler/infer/reconstruct.h"
+#include "formats/point_cloud_io.h"
+#include "formats/skeleton_json.h"
+
+namespace ramus::cli {
+
+namespace {
+
+std::vector<Skeleton> grow_seeds(const std::string& path, const SkeletonSourceOptions& o) {
+  std::vector<Skeleton> out;
+  for (int s = 0; s < std::max(o.seeds, 1); ++s) {
+    GrowArgs args;
+    args.file = path;
+    args.seed = o.first_seed + std::uint64_t(s);
+    std::optional<Skeleton> sk = grow_for_cli(args);
+    if (!sk) throw UserError(path + " has errors");
+    out.push_back(std::move(*sk));
+  }
+  return out;
+}
+
+Skeleton reconstruct_scan(const std::string& path, const SkeletonSourceOptions& o) {
+  PointCloud cloud;
+  try {
+    cloud = read_point_cloud(path);
+  } catch (const FormatError& e) {
+    throw UserError(e.what());
+  }
+  ReconstructOptions ro;
+  ro.leaves = false;
+  ReconstructResult r;
+  try {
+    r = reconstruct(cloud, ro);
+  } catch (const ReconstructError& e) {
+    throw UserError(path + ": " + e.what());
+  }
+  if (r.trees.empty()) {
+    throw UserError(path + ": " + (r.notes.empty() ? "no tree found" : r.notes.back()));
+  }
+  std::size_t pick = 0;
+  if (o.tree_index >= 0) {
+    if (std::size_t(o.tree_index) >= r.trees.size()) {
+      throw UserError(path + ": --tree-index " + std::to_string(o.tree_index) +
+                      " but the scan has " + std::to_string(r.trees.size()) + " tree(s)");
+    }
+    pick = std::size_t(o.tree_index);
+  } else {
+    for (std::size_t t = 1; t < r.trees.size(); ++t) {
+      if (r.trees[t].total_length() > r.trees[pick].total_length()) pick = t;
+    }
+  }
+  if (!o.quiet) {
+    std::fprintf(stderr, "ramus: %s: tree %zu of %zu (%zu nodes) reconstructed in %.2f s\n",
+                 path.c_str(), pick, r.trees.size(), r.trees[pick].size(), r.timings.total);
+  }
+  return std::move(r.trees[pick]);
+}
+
+}  // namespace
+
+std::vector<Skeleton> load_skeleton_source(const std::string& path,
+                                           const SkeletonSourceOptions& options) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".ramus") return grow_seeds(path, options);
+  if (ext == ".json") {
+    try {
+      return {read_skeleton_json(path)};
+    } catch (const FormatError& e) {
+      throw UserError(e.what());
+    }
+  }
+  return {reconstruct_scan(path, options)};
+}
+
+}  // namespace ramus::cli

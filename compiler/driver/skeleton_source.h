@@ -1,0 +1,25 @@
+// Skeleton sources of `ramus infer --method skeleton` and `ramus compare`: a grammar (.ramus,
+// grown over several seeds), a skeleton file (.json) or a laser scan (reconstructed, Livny et al.).
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/skeleton.h"
+
+namespace ramus::cli {
+
+struct SkeletonSourceOptions {
+  int seeds = 1;  // trees grown from a grammar: seeds first_seed, first_seed + 1, ...
+  std::uint64_t first_seed = 1;
+  int tree_index = -1;  // scans: the tree to use; -1: the one with the most length
+  bool quiet = false;
+};
+
+// One skeleton per grown grammar seed; one for a skeleton file; the chosen tree of a scan.
+// Errors (unreadable files, grammars with errors, scans without a tree) are UserErrors.
+std::vector<Skeleton> load_skeleton_source(const std::string& path,
+                                           const SkeletonSourceOptions& options);
+
+}  // namespace ramus::cli

@@ -1,0 +1,544 @@
+#include "compiler/infer/skeleton/skeleton_grammar.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+
+#include "compiler/derive.h"
+#include "compiler/grow.h"
+#include "compiler/pipeline.h"
+#include "compiler/turtle.h"
+#include "grammar/diagnostic.h"
+#include "grammar/format.h"
+#include "grammar/parser.h"
+#include "grammar/source.h"
+
+namespace ramus::skeleton_infer {
+
+namespace {
+
+// Widths and lengths are logged as log(max(x, kTiny)), as the grammar writes them.
+constexpr double kTiny = 1e-9;
+
+// What the grammar needs to know about one order group besides its clusters.
+struct OrderStats {
+  std::size_t internodes = 0, tips = 0;
+  std::uint32_t max_axis_index = 0;  // the last internode of every axis is a tip
+  std::vector<TipSample> hazard;     // depth, log width and tip of every internode
+};
+
+// `clamp(normal(m, s), lo, hi)`, or the mean alone when the spread is nil.
+std::string draw(const Fitted& f) {
+  if (f.sd < 1e-6 || f.max - f.min < 1e-9) return grammar_number(f.mean);
+  return "clamp(normal(" + grammar_number(f.mean) + ", " + grammar_number(f.sd) + "), " +
+         grammar_number(f.min) + ", " + grammar_number(f.max) + ")";
+}
+
+// A log-normal ratio: exp of the clamped normal of the logarithms, or the constant ratio. A
+// length ratio with a slope has its mean depend on the parent's log-length (regression).
+std::string draw_ratio(const Fitted& f, const char* parent) {
+  if (f.slope != 0) {
+    const std::string mean = grammar_number(f.mean - f.slope * f.centre) + " + " +
+                             grammar_number(f.slope) + " * log(max(" + parent + ", 1e-9))";
+    return "exp(clamp(normal(" + mean + ", " + grammar_number(std::max(f.sd, 1e-6)) + "), " +
+           grammar_number(f.min) + ", " + grammar_number(f.max) + "))";
+  }
+  if (f.atoms) {
+    // Two exact ratios: floor(uniform(0, 1) + p) is 1 with probability p.
+    const double r0 = std::exp(f.atom0), r1 = std::exp(f.atom1);
+    if (f.atom_p <= 0 || std::abs(r1 - r0) < 1e-9) return grammar_number(r0);
+    return "(" + grammar_number(r0) + " + " + grammar_number(r1 - r0) +
+           " * floor(uniform(0, 1) + " + grammar_number(f.atom_p) + "))";
+  }
+  if (f.sd < 1e-6 || f.max - f.min < 1e-9) return grammar_number(std::exp(f.mean));
+  return "exp(" + draw(f) + ")";
+}
+
+std::string draw_angle(const FittedAngle& f) {
+  if (f.uniform) return "uniform(0, 360)";
+  if (f.sd < 1e-6) return grammar_number(f.mean);
+  return "normal(" + grammar_number(f.mean) + ", " + grammar_number(f.sd) + ")";
+}
+
+// The turtle turns of one child: level the frame, roll by phi, pitch down by theta.
+std::string turn(const ChildDistribution& c) {
+  return "$/(" + draw_angle(c.phi) + ")&(" + draw(c.theta) + ")";
+}
+
+// The observed range of internode lengths: a child's length is kept inside it, so that the
+// product of many ratios cannot run away from what the tree shows.
+struct LengthRange {
+  double min = 0, max = 0;
+};
+
+// How an internode of length `len` is drawn. A reconstructed internode is a bent chain whose
+// chord is shorter than its path (tortuosity tau = chord / path, 0.36 to 0.92 on the bundled
+// scans); drawn straight with its path length, a regrown tree spreads up to 3.5 times wider.
+// With tau < 1 it is drawn as two halves kinked by +-psi, psi = acos(tau), in a plane of random
+// roll: the path length stays `len`, the chord becomes tau * len, and the heading at the end is
+// the heading at the start (the pitches cancel; the roll is reset by the `$` of every child).
+// Below this kink (tortuosity above cos 10 degrees = 0.985) an internode is drawn straight:
+// the chord changes by under 1.5 percent, and the straight form keeps the grammar plain.
+constexpr double kMinKink = 10;
+
+// The axiom may not draw random numbers: it kinks in the plane of roll 0.
+std::string segment(double kink_degrees, const std::string& len, bool random_roll = true) {
+  if (kink_degrees < kMinKink) return "F(" + len + ")";
+  const std::string k = grammar_number(kink_degrees);
+  return (random_roll ? "/(uniform(0, 360))&(" : "&(") + k + ")F(" + len + " * 0.5)&(-" +
+         grammar_number(2 * kink_degrees) + ")F(" + len + " * 0.5)&(" + k + ")";
+}
+
+std::string child(const ChildDistribution& d, const LengthRange& range, const char* rest) {
+  return turn(d) + "N(clamp(l * " + draw_ratio(d.log_a, "l") + ", " + grammar_number(range.min) +
+         ", " + grammar_number(range.max) + "), w * " + draw_ratio(d.log_b, "w") + ", " + rest +
+         ")";
+}
+
+std::string alternative(const RuleCluster& c, const LengthRange& range, double kink) {
+  std::string s = "!(w)" + segment(kink, "l");
+  for (std::size_t j = 1; j < c.children.size(); ++j) {
+    s += "[" + child(c.children[j], range, "o + 1, 0, d + 1") + "]";
+  }
+  if (!c.children.empty()) s += child(c.children[0], range, "o, i + 1, d + 1");
+  return s;
+}
+
+// Observed frequencies as decimals with six places that sum to exactly 1 (largest remainder),
+// as the checker requires of a stochastic production.
+std::vector<std::string> probabilities(const std::vector<std::size_t>& counts) {
+  constexpr std::int64_t kScale = 1'000'000;
+  std::size_t total = 0;
+  for (std::size_t c : counts) total += c;
+  std::vector<std::int64_t> parts(counts.size());
+  std::vector<std::pair<double, std::size_t>> remainders;
+  std::int64_t used = 0;
+  for (std::size_t i = 0; i < counts.size(); ++i) {
+    const double exact = double(counts[i]) * double(kScale) / double(total);
+    parts[i] = std::int64_t(std::floor(exact));
+    used += parts[i];
+    remainders.push_back({exact - double(parts[i]), i});
+  }
+  std::stable_sort(remainders.begin(), remainders.end(),
+                   [](const auto& x, const auto& y) { return x.first > y.first; });
+  for (std::size_t k = 0; used < kScale; ++k, ++used)
+    ++parts[remainders[k % remainders.size()].second];
+  std::vector<std::string> out;
+  for (std::int64_t p : parts) {
+    if (p == kScale) {
+      out.push_back("1");
+      continue;
+    }
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "0.%06lld", static_cast<long long>(p));
+    std::string s = buf;
+    while (s.back() == '0') s.pop_back();
+    if (s.back() == '.') s.pop_back();
+    out.push_back(s);
+  }
+  return out;
+}
+
+std::size_t count_alternatives(const std::vector<RuleGroup>& groups) {
+  std::size_t n = 1;  // the fallback production
+  for (const RuleGroup& g : groups) n += g.clusters.size();
+  return n;
+}
+
+// Meets the rule budget: fewer clusters in the group with the most, then drop the rarest
+// branching groups (their weight goes to the rest of their order).
+void fit_budget(const BranchRules& rules, std::vector<RuleGroup>& groups,
+                const GrammarOptions& options) {
+  const auto budget = std::size_t(std::max(options.max_rules, 2));
+  while (count_alternatives(groups) > budget) {
+    auto most = std::max_element(groups.begin(), groups.end(), [](const auto& x, const auto& y) {
+      return x.clusters.size() < y.clusters.size();
+    });
+    if (most->clusters.size() > 1) {
+      recluster_group(rules, *most, int(most->clusters.size()) - 1, options.cluster);
+      continue;
+    }
+    auto rarest = groups.end();
+    for (auto it = groups.begin(); it != groups.end(); ++it) {
+      if (it->arity == 0) continue;
+      if (rarest == groups.end() || it->count < rarest->count) rarest = it;
+    }
+    if (rarest == groups.end()) break;
+    groups.erase(rarest);
+  }
+}
+
+// A calibration growth with more modules than this is taken as far too long.
+constexpr std::uint64_t kMaxCalibrationModules = 20'000'000;
+
+// Mean total length of trees grown from `text` with seeds 1..n.
+double mean_grown_length(const std::string& text, int seeds) {
+  double sum = 0;
+  for (int k = 1; k <= seeds; ++k) {
+    GrowOptions o;
+    o.seed = std::uint64_t(k);
+    SourceManager sources;
+    DiagnosticSink sink;
+    try {
+      const ir::Grammar g = lower_text("inferred.ramus", text, o, sources, sink);
+      DeriveOptions d;
+      d.max_modules = kMaxCalibrationModules;
+      TurtleOptions t;
+      t.seed = g.settings.seed;
+      t.steps = g.settings.derive;
+      sum += interpret(g, derive(g, d), t).total_length();
+    } catch (const DeriveError&) {
+      return std::numeric_limits<double>::infinity();  // over the module limit: far too long
+    } catch (const std::exception& e) {
+      throw InferError(std::string("internal error: the inferred grammar does not grow: ") +
+                       e.what());
+    }
+  }
+  return sum / double(seeds);
+}
+
+// Calibration against the input: the intercept shift of every tip hazard for which the trees the
+// grammar grows have, over `calibration_seeds` seeds, the input tree's total length. Without it
+// the regrown length is off by up to 3x: the hazard is fitted per internode, but the regrown tree
+// compounds its errors (ratios drawn independently, tips of a scan hidden by occlusion). The
+// mean length falls as the shift grows (more tips), so the shift is found by bisection on
+// [-kMaxShift, kMaxShift] in the log of the length ratio.
+template <class Write>
+double calibrate_tip_shift(const Write& write, double target, const GrammarOptions& options) {
+  constexpr double kMaxShift = 30;
+  constexpr int kSteps = 12;
+  if (!(target > 0)) return 0;
+  auto error = [&](double shift) {
+    const double grown = mean_grown_length(write(shift), options.calibration_seeds);
+    return std::log(std::max(grown, 1e-12) / target);
+  };
+  double lo = -kMaxShift, hi = kMaxShift;
+  if (error(lo) <= 0) return lo;  // even with fewer tips the grammar grows too little
+  if (error(hi) >= 0) return hi;
+  for (int it = 0; it < kSteps; ++it) {
+    const double mid = (lo + hi) / 2;
+    (error(mid) > 0 ? lo : hi) = mid;
+  }
+  return (lo + hi) / 2;
+}
+
+}  // namespace
+
+TipHazard fit_tip_hazard(const std::vector<double>& depth, const std::vector<double>& is_tip) {
+  std::vector<TipSample> samples(depth.size());
+  for (std::size_t k = 0; k < depth.size(); ++k) samples[k] = {depth[k], 0, is_tip[k]};
+  return fit_tip_hazard(samples);
+}
+
+TipHazard fit_tip_hazard(const std::vector<TipSample>& samples) {
+  // Newton-Raphson (IRLS) on the log-likelihood of p(x) = 1 / (1 + exp(-(c . x))) with
+  // x = (1, d, log w) and a small ridge penalty, which keeps the fit finite when a feature
+  // separates tips perfectly (a grammar whose tips are exactly the internodes below a width, or
+  // all at the last step). The features are centred and scaled to unit spread for the fit (the
+  // ridge then weighs them alike) and the coefficients mapped back.
+  constexpr double kRidge = 1e-3;
+  constexpr std::size_t kDim = 3;
+  TipHazard h;
+  const std::size_t n = samples.size();
+  if (n == 0) return h;
+  std::array<double, kDim> centre{}, scale{1, 1, 1};
+  auto raw = [](const TipSample& s) { return std::array<double, kDim>{1, s.depth, s.log_width}; };
+  for (const TipSample& s : samples) {
+    const auto x = raw(s);
+    for (std::size_t j = 1; j < kDim; ++j) centre[j] += x[j] / double(n);
+  }
+  for (std::size_t j = 1; j < kDim; ++j) {
+    double var = 0;
+    for (const TipSample& s : samples) var += std::pow(raw(s)[j] - centre[j], 2) / double(n);
+    scale[j] = var > 1e-12 ? std::sqrt(var) : 0;  // a constant feature is left out
+  }
+  std::vector<std::array<double, kDim>> x(n);
+  double tips = 0;
+  for (std::size_t k = 0; k < n; ++k) {
+    const auto r = raw(samples[k]);
+    x[k][0] = 1;
+    for (std::size_t j = 1; j < kDim; ++j)
+      x[k][j] = scale[j] > 0 ? (r[j] - centre[j]) / scale[j] : 0;
+    tips += samples[k].tip;
+  }
+  const double mean = std::clamp(tips / double(n), 1e-6, 1 - 1e-6);
+  std::array<double, kDim> c{std::log(mean / (1 - mean)), 0, 0};
+  for (int it = 0; it < 200; ++it) {
+    std::array<double, kDim> g{};
+    std::array<std::array<double, kDim + 1>, kDim> m{};  // Hessian | gradient
+    for (std::size_t j = 0; j < kDim; ++j) {
+      g[j] = -kRidge * c[j];
+      m[j][j] = kRidge;
+    }
+    for (std::size_t k = 0; k < n; ++k) {
+      double z = 0;
+      for (std::size_t j = 0; j < kDim; ++j) z += c[j] * x[k][j];
+      const double p = 1 / (1 + std::exp(-std::clamp(z, -40.0, 40.0)));
+      const double r = samples[k].tip - p, w = p * (1 - p);
+      for (std::size_t i = 0; i < kDim; ++i) {
+        g[i] += r * x[k][i];
+        for (std::size_t j = 0; j < kDim; ++j) m[i][j] += w * x[k][i] * x[k][j];
+      }
+    }
+    for (std::size_t j = 0; j < kDim; ++j) m[j][kDim] = g[j];
+    // Gaussian elimination with partial pivoting (the matrix is positive definite).
+    bool ok = true;
+    for (std::size_t col = 0; col < kDim && ok; ++col) {
+      std::size_t piv = col;
+      for (std::size_t r = col + 1; r < kDim; ++r)
+        if (std::abs(m[r][col]) > std::abs(m[piv][col])) piv = r;
+      std::swap(m[col], m[piv]);
+      if (!(std::abs(m[col][col]) > 1e-300)) ok = false;
+      for (std::size_t r = 0; r < kDim && ok; ++r) {
+        if (r == col) continue;
+        const double f = m[r][col] / m[col][col];
+        for (std::size_t j = col; j <= kDim; ++j) m[r][j] -= f * m[col][j];
+      }
+    }
+    if (!ok) break;
+    double step = 0;
+    for (std::size_t j = 0; j < kDim; ++j) {
+      const double d = m[j][kDim] / m[j][j];
+      c[j] += d;
+      step += std::abs(d);
+    }
+    if (!(step >= 1e-10)) break;
+  }
+  h.beta = scale[1] > 0 ? c[1] / scale[1] : 0;
+  h.gamma = scale[2] > 0 ? c[2] / scale[2] : 0;
+  h.alpha = c[0] - h.beta * centre[1] - h.gamma * centre[2];
+  for (std::size_t k = 0; k < n; ++k) {
+    double z = 0;
+    for (std::size_t j = 0; j < kDim; ++j) z += c[j] * x[k][j];
+    const double p = std::clamp(1 / (1 + std::exp(-std::clamp(z, -40.0, 40.0))), 1e-12, 1 - 1e-12);
+    h.log_likelihood += samples[k].tip > 0.5 ? std::log(p) : std::log(1 - p);
+  }
+  return h;
+}
+
+std::string grammar_number(double v) {
+  if (!std::isfinite(v)) return "0";
+  if (std::abs(v) < 1e-9) return "0";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.4g", v);
+  std::string s = buf;
+  // "%g" may write "1e+02"; the language reads "1e+02" too, but fixed notation reads better.
+  if (s.find('e') != std::string::npos && std::abs(v) >= 1e-4 && std::abs(v) < 1e15) {
+    std::snprintf(buf, sizeof buf, "%.6f", v);
+    s = buf;
+    while (!s.empty() && s.back() == '0') s.pop_back();
+    if (!s.empty() && s.back() == '.') s.pop_back();
+  }
+  return s;
+}
+
+InferredGrammar infer_grammar(const Skeleton& skeleton, const GrammarOptions& options) {
+  return infer_grammar(extract_branch_rules(skeleton), options);
+}
+
+InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& options) {
+  if (rules.internodes.empty()) {
+    throw InferError("the skeleton has no segment (a single node or none): nothing to infer");
+  }
+  InferredGrammar out;
+  out.internodes = rules.internodes.size();
+  for (const NodeRule& r : rules.rules) out.branch_nodes += r.child_count >= 2 ? 1 : 0;
+
+  const int max_order = options.cluster.max_order;
+  std::map<std::uint16_t, OrderStats> stats;
+  std::uint16_t deepest_order = 0;
+  std::uint32_t deepest = 0;
+  for (const Internode& in : rules.internodes) {
+    OrderStats& s = stats[std::uint16_t(std::min<int>(in.order, max_order))];
+    ++s.internodes;
+    const bool tip = rules.rules[&in - rules.internodes.data()].child_count == 0;
+    s.tips += tip ? 1 : 0;
+    s.hazard.push_back(
+        {double(in.depth), std::log(std::max(2 * in.radius, kTiny)), tip ? 1.0 : 0.0});
+    s.max_axis_index = std::max(s.max_axis_index, in.axis_index);
+    deepest_order = std::max(deepest_order, in.order);
+    deepest = std::max(deepest, in.depth);
+  }
+  LengthRange lengths{rules.internodes[0].length, rules.internodes[0].length};
+  for (const Internode& in : rules.internodes) {
+    lengths.min = std::min(lengths.min, in.length);
+    lengths.max = std::max(lengths.max, in.length);
+  }
+  // Tortuosity of the internodes, length-weighted: the kink angle of `segment`.
+  double chords = 0, paths = 0;
+  for (const Internode& in : rules.internodes) chords += in.chord, paths += in.length;
+  const double tortuosity = paths > 0 ? std::clamp(chords / paths, 0.0, 1.0) : 1.0;
+  const double kink = std::acos(tortuosity) * 57.29577951308232;  // degrees
+  out.tortuosity = tortuosity;
+  out.derive = int(deepest);  // the axiom draws depth 0; step k expands depth k
+  out.groups = cluster_rules(rules, options.cluster);
+  fit_budget(rules, out.groups, options);
+
+  // The axiom: the first internode of the tree with the most length (when the root forks, the
+  // one carrying the most length above it: a reconstructed root often has short stubs beside
+  // the trunk), turned from the turtle's initial frame like the real trunk.
+  std::size_t tree = 0;
+  for (std::size_t t = 1; t < rules.tree_length.size(); ++t) {
+    if (rules.tree_length[t] > rules.tree_length[tree]) tree = t;
+  }
+  std::vector<double> carried(rules.internodes.size(), 0.0);  // length of internode + subtree
+  for (std::size_t i = rules.internodes.size(); i-- > 0;) {
+    carried[i] += rules.internodes[i].length;
+    std::uint32_t p = rules.internodes[i].parent;
+    if (p != kNone && p < i) {
+      carried[p] += carried[i];
+    } else {
+      // Parents are extracted before their children; walk up if one is not.
+      for (; p != kNone; p = rules.internodes[p].parent) carried[p] += rules.internodes[i].length;
+    }
+  }
+  std::uint32_t trunk = rules.tree_first[tree];
+  for (std::uint32_t i = trunk;
+       i < rules.internodes.size() &&
+       rules.internodes[i].tree == rules.internodes[rules.tree_first[tree]].tree;
+       ++i) {
+    const Internode& in = rules.internodes[i];
+    if (in.parent == kNone && carried[i] > carried[trunk]) trunk = i;
+  }
+  const Internode& t0 = rules.internodes[trunk];
+  double theta0 = 0, phi0 = 0;
+  angle_and_azimuth(Vec3{0, 0, 1}, t0.direction, theta0, phi0);
+
+  // Termination per order group: the logistic hazard of depth, and of log width too when that
+  // model is better by the Bayesian information criterion (a tree grown with a width threshold
+  // has its tips where w falls; on a scan the radii are often too noisy to tell).
+  std::map<std::uint16_t, TipHazard> hazards;
+  for (const auto& [order, st] : stats) {
+    std::vector<TipSample> depth_only = st.hazard;
+    for (TipSample& t : depth_only) t.log_width = 0;
+    const TipHazard by_depth = fit_tip_hazard(depth_only);
+    const TipHazard by_width = fit_tip_hazard(st.hazard);
+    const double ln_n = std::log(double(std::max<std::size_t>(st.hazard.size(), 1)));
+    hazards[order] = 2 * by_width.log_likelihood - 3 * ln_n > 2 * by_depth.log_likelihood - 2 * ln_n
+                         ? by_width
+                         : by_depth;
+  }
+
+  // The grammar with every tip hazard's intercept moved by `shift` (see calibration below).
+  auto write = [&](double shift) {
+    std::string text;
+    text += "// Inferred by `ramus infer --method skeleton`";
+    if (!options.source_name.empty()) text += " from " + options.source_name;
+    text += ": " + std::to_string(out.internodes) + " internodes, " +
+            std::to_string(out.branch_nodes) + " branch nodes.\n";
+    text +=
+        "// N(l, w, o, i, d): an internode of length l and width w, branch order o, position i on "
+        "its axis, depth d.\n";
+    text += "lsystem " + options.system_name + " {\n";
+    text += "  derive " + std::to_string(out.derive) + ";\n";
+    text += "  seed " + std::to_string(options.cluster.seed) + ";\n";
+    // The first internode and its children as observed (absolute lengths and widths): the trunk's
+    // base is often far longer than any later internode, and no ratio describes that jump.
+    std::string axiom = "/(" + grammar_number(phi0) + ")&(" + grammar_number(theta0) + ")!(" +
+                        grammar_number(2 * t0.radius) + ")" +
+                        segment(kink, grammar_number(t0.length), false);
+    const NodeRule& root_rule = rules.rules[trunk];
+    std::string continuation;
+    for (const ChildRule* c = rules.begin(root_rule); c != rules.end(root_rule); ++c) {
+      const Internode& ci = rules.internodes[c->internode];
+      const std::string call = "$/(" + grammar_number(c->phi) + ")&(" + grammar_number(c->theta) +
+                               ")N(" + grammar_number(ci.length) + ", " +
+                               grammar_number(2 * ci.radius) + ", " + std::to_string(ci.order) +
+                               ", " + std::to_string(ci.axis_index) + ", 1)";
+      if (ci.continuation) {
+        continuation = call;
+      } else {
+        axiom += "[" + call + "]";
+      }
+    }
+    axiom += continuation;
+    text += "  axiom " + axiom + ";\n";
+
+    out.productions = 1;
+    out.alternatives = 1;
+    for (const auto& [order, st] : stats) {
+      std::vector<const RuleGroup*> mine;
+      for (const RuleGroup& g : out.groups) {
+        if (g.order == order) mine.push_back(&g);
+      }
+      const bool branches =
+          std::any_of(mine.begin(), mine.end(), [](const RuleGroup* g) { return g->arity > 0; });
+      if (!branches || st.max_axis_index == 0) continue;  // the fallback draws its tips
+      std::string guard;
+      if (order < max_order) {
+        guard = "o == " + std::to_string(order);
+      } else {
+        guard = "o >= " + std::to_string(order) + " && o <= " + std::to_string(deepest_order);
+      }
+      guard += " && i < " + std::to_string(st.max_axis_index);
+      text += "  // order " + std::to_string(order) + (order == max_order ? " and above" : "") +
+              ": " + std::to_string(st.internodes) + " internodes, longest axis " +
+              std::to_string(st.max_axis_index + 1) + "\n";
+      text += "  N(l, w, o, i, d) : " + guard + " ->";
+      // Tips by the logistic hazard of depth, log width and log length; branching alternatives
+      // share the rest by their observed frequencies among the branch nodes of the order.
+      std::vector<std::size_t> counts;
+      const RuleGroup* tip_group = nullptr;
+      for (const RuleGroup* g : mine) {
+        if (g->arity == 0) {
+          tip_group = g;
+          continue;
+        }
+        for (const RuleCluster& c : g->clusters) counts.push_back(c.count);
+      }
+      const std::vector<std::string> probs = probabilities(counts);
+      const TipHazard& h = hazards.at(order);
+      std::string z = grammar_number(h.alpha + shift) + " + " + grammar_number(h.beta) + " * d";
+      if (h.gamma != 0) z += " + " + grammar_number(h.gamma) + " * log(max(w, 1e-9))";
+      bool first = true;
+      if (tip_group != nullptr) {
+        text += " (1 / (1 + exp(clamp(-(" + z + "), -30, 30)))) !(w)" + segment(kink, "l");
+        first = false;
+        ++out.alternatives;
+      }
+      std::size_t k = 0;
+      for (const RuleGroup* g : mine) {
+        if (g->arity == 0) continue;
+        for (const RuleCluster& c : g->clusters) {
+          text += first ? " " : " | ";
+          const std::string& q = probs[k++];
+          if (tip_group != nullptr) {
+            text += "(" + q + " / (1 + exp(clamp(" + z + ", -30, 30)))) ";
+          } else {
+            text += "(" + q + ") ";
+          }
+          first = false;
+          text += alternative(c, lengths, kink);
+          ++out.alternatives;
+        }
+      }
+      text += ";\n";
+      ++out.productions;
+    }
+    text += "  // tips: axes past their longest observed length, orders past the deepest\n";
+    text += "  N(l, w, o, i, d) -> !(w)" + segment(kink, "l") + ";\n";
+    text += "}\n";
+    return text;
+  };
+
+  std::string text = write(0);
+  if (options.calibration_seeds > 0) {
+    const double target = rules.tree_length[tree];
+    out.tip_shift = calibrate_tip_shift(write, target, options);
+    text = write(out.tip_shift);
+  }
+
+  // Canonical layout: what `ramus fmt` would write.
+  SourceManager sources;
+  DiagnosticSink sink;
+  const std::uint32_t id = sources.add("inferred.ramus", text);
+  const ast::File file = parse(sources, id, sink);
+  if (sink.has_errors()) throw InferError("internal error: the inferred grammar does not parse");
+  out.text = format_file(file, sources);
+  return out;
+}
+
+}  // namespace ramus::skeleton_infer

@@ -1,0 +1,85 @@
+// `ramus infer --method skeleton` and `ramus compare` end to end: a real scan, a grammar, a
+// skeleton file, bad input.
+#include <catch2/catch.hpp>
+
+#include "../cli/cli_runner.h"
+#include "skeleton_fixtures.h"
+
+using cli_test::run_ramus;
+using cli_test::slurp;
+
+namespace {
+
+std::string data(const std::string& name) {
+  return std::string(RAMUS_SHARED_DIR) + "/data/" + name;
+}
+
+}  // namespace
+
+TEST_CASE("infer skeleton cli: a real scan gives a grammar that checks and is formatted",
+          "[skeleton_infer]") {
+  const std::string out = skeleton_test::scratch("adtree_tree1.ramus").string();
+  const auto r = run_ramus({"infer", data("adtree_tree1.xyz"), "-o", out, "--method", "skeleton"});
+  INFO(r.out);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("productions") != std::string::npos);
+  CHECK(run_ramus({"check", out}).status == 0);
+  CHECK(run_ramus({"fmt", "--check", out}).status == 0);
+  const std::string text = slurp(out);
+  std::string messages;
+  CHECK(skeleton_test::grammar_checks(text, messages));
+  // It grows a tree.
+  const ramus::Skeleton grown = skeleton_test::grow_text("adtree_regrown.ramus", text, 2);
+  CHECK(grown.size() > 10);
+  // Deterministic: the same input and seed write the same bytes.
+  const std::string again = skeleton_test::scratch("adtree_tree1_again.ramus").string();
+  REQUIRE(
+      run_ramus({"infer", data("adtree_tree1.xyz"), "-o", again, "--method", "skeleton"}).status ==
+      0);
+  CHECK(slurp(again) == text);
+}
+
+TEST_CASE("infer skeleton cli: options, merge, and bad input", "[skeleton_infer]") {
+  const std::string grammar = std::string(RAMUS_SOURCE_DIR) + "/examples/trees/conifer.ramus";
+  const std::string out = skeleton_test::scratch("conifer_inferred.ramus").string();
+  auto r = run_ramus({"infer", grammar, "-o", out, "--method", "skeleton", "--max-rules", "6",
+                      "--clusters", "3", "--merge", "10,15"});
+  INFO(r.out);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("merged branches") != std::string::npos);
+  CHECK(run_ramus({"check", out}).status == 0);
+  // Bad --merge text, a one-node skeleton, an unreadable input, a malformed skeleton file.
+  r = run_ramus({"infer", grammar, "-o", out, "--method", "skeleton", "--merge", "ten"});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("--merge") != std::string::npos);
+  const std::string one = skeleton_test::write_temp(
+      "one_node.json",
+      R"({"format": "ramus-skeleton", "version": 1, "nodes": [{"position": [0, 0, 0], "parent": -1, "radius": 0.1}]})");
+  r = run_ramus({"infer", one, "-o", out, "--method", "skeleton"});
+  INFO(r.out);
+  CHECK(r.status == 1);
+  CHECK(r.out.find("error") != std::string::npos);
+  r = run_ramus({"infer", "/nonexistent/x.json", "-o", out, "--method", "skeleton"});
+  CHECK(r.status == 1);
+  const std::string bad = skeleton_test::write_temp("bad.json", "{\"format\": ");
+  r = run_ramus({"infer", bad, "-o", out, "--method", "skeleton"});
+  CHECK(r.status == 1);
+}
+
+TEST_CASE("compare cli: prints a KS distance per distribution", "[skeleton_infer]") {
+  const std::string grammar = std::string(RAMUS_SOURCE_DIR) + "/examples/trees/broadleaf.ramus";
+  auto r = run_ramus({"compare", grammar, grammar, "--seeds", "3"});
+  INFO(r.out);
+  REQUIRE(r.status == 0);
+  for (const char* m : {"branch length", "branching angle", "azimuth", "radius ratio",
+                        "branch order", "total length", "crown extent", "height"}) {
+    CHECK(r.out.find(m) != std::string::npos);
+  }
+  // The same source against itself: every distance is 0.
+  CHECK(r.out.find("largest KS 0.0000") != std::string::npos);
+  // A scan against a grammar.
+  r = run_ramus({"compare", data("adtree_tree1.xyz"), grammar, "--seeds", "2"});
+  CHECK(r.status == 0);
+  r = run_ramus({"compare", "/nonexistent.json", grammar});
+  CHECK(r.status == 1);
+}
