@@ -10,13 +10,17 @@ void add_fmt(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_derive(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_compress(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_enhance(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_symmetrize(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_propagate(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_inspect(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_build(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_preview(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_reconstruct(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_scan(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_dump(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_decompile(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_infer(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_compare(CLI::App&, const GlobalOptions&, std::function<int()>&);
 
 const std::vector<CommandSpec>& command_table() {
   static const std::vector<CommandSpec> table = {
@@ -26,13 +30,17 @@ const std::vector<CommandSpec>& command_table() {
       {"derive", add_derive},
       {"compress", add_compress},
       {"enhance", add_enhance},
+      {"symmetrize", add_symmetrize},
+      {"propagate", add_propagate},
       {"infer", add_infer},
+      {"compare", add_compare},
       {"inspect", add_inspect},
       {"build", add_build},
       {"preview", add_preview},
       {"reconstruct", add_reconstruct},
       {"scan", add_scan},
       {"dump", add_dump},
+      {"decompile", add_decompile},
   };
   return table;
 }
