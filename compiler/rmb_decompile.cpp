@@ -9,18 +9,11 @@
 #include "core/number_text.h"
 #include "grammar/builtins.h"
 #include "grammar/format.h"
+#include "grammar/modules.h"
 
 namespace ramus {
 
 namespace {
-
-bool is_identifier(const std::string& s) {
-  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-  for (char c : s) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
-  }
-  return true;
-}
 
 ast::Expr make(decltype(ast::Expr::node) node) {
   ast::Expr e;

@@ -1,5 +1,7 @@
 #include "grammar/modules.h"
 
+#include <cctype>
+
 namespace ramus {
 
 namespace {
@@ -22,6 +24,14 @@ std::vector<std::string> split_module_name(
   out.reserve(name.size());
   for (char c : name) out.emplace_back(1, c);
   return out;
+}
+
+bool is_identifier(std::string_view s) {
+  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+  for (char c : s) {
+    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+  }
+  return true;
 }
 
 }  // namespace ramus

@@ -23,4 +23,7 @@ std::vector<std::string> split_module_name(
 bool splits_into_letters(std::string_view name,
                          const std::function<bool(std::string_view)>& is_declared);
 
+// True when `s` is an identifier of the language: a letter or '_', then letters, digits or '_'.
+bool is_identifier(std::string_view s);
+
 }  // namespace ramus

@@ -13,6 +13,7 @@
 #include "backends/pieces/pieces.h"
 #include "backends/preview/preview.h"
 #include "compiler/driver/defines.h"
+#include "compiler/driver/grow_args.h"
 #include "compiler/grow.h"
 #include "core/atomic_file.h"
 #include "grammar/check.h"
@@ -20,12 +21,6 @@
 
 namespace ramus::cli {
 namespace {
-
-void print_diagnostics(const SourceManager& sources, DiagnosticSink& diags) {
-  if (diags.all().empty()) return;
-  diags.sort();
-  std::fputs(render_text(sources, diags.all()).c_str(), stderr);
-}
 
 // Copies of one tree stand on a row; the spacing keeps their crowns apart.
 double row_spacing(const pieces::PieceSet& set, const pieces::Tree& tree) {

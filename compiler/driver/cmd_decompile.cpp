@@ -4,12 +4,11 @@
 // layout (`ramus fmt` leaves it unchanged) and derives the same string for the same seed.
 // Without -o it goes to stdout.
 #include <cstdio>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include "compiler/driver/command.h"
+#include "compiler/driver/read_file.h"
 #include "compiler/rmb_codec.h"
 #include "compiler/rmb_decompile.h"
 #include "core/atomic_file.h"
@@ -23,16 +22,8 @@ struct DecompileArgs {
   std::string output;
 };
 
-std::string read_binary(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UserError("cannot open " + path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 int run_decompile(const DecompileArgs& a, bool quiet) {
-  const std::string bytes = read_binary(a.file);
+  const std::string bytes = read_file_bytes(a.file);
   std::string text;
   try {
     text = decompile(decode_rmb_contents(bytes));

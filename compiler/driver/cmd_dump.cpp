@@ -3,28 +3,19 @@
 // the field and its value, with a heading line per section and record. On a damaged file it
 // prints what it could read, then the error with the byte offset (exit 1).
 #include <cstdio>
-#include <fstream>
 #include <memory>
-#include <sstream>
 #include <string>
 
 #include "compiler/driver/command.h"
+#include "compiler/driver/read_file.h"
 #include "compiler/rmb_codec.h"
 
 namespace ramus::cli {
 
 namespace {
 
-std::string read_binary(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UserError("cannot open " + path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
 int run_dump(const std::string& path) {
-  const std::string file = read_binary(path);
+  const std::string file = read_file_bytes(path);
   std::string bytes;  // what the listing shows: the file, or a zstd file's plain image
   try {
     bytes = rmb_uncompressed(file);

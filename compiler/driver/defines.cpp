@@ -5,20 +5,11 @@
 #include <cmath>
 
 #include "compiler/driver/command.h"
+#include "grammar/modules.h"
 
 namespace ramus::cli {
 
-namespace {
-
-bool is_identifier(const std::string& s) {
-  if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
-  for (char c : s) {
-    if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
-  }
-  return true;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 std::pair<std::string, double> parse_define(const std::string& text) {
   const auto eq = text.find('=');

@@ -9,12 +9,6 @@ namespace ramus::cli {
 
 namespace {
 
-void print_diagnostics(const SourceManager& sources, DiagnosticSink& diags) {
-  if (diags.all().empty()) return;
-  diags.sort();
-  std::fputs(render_text(sources, diags.all()).c_str(), stderr);
-}
-
 // Runs one front-end step (lower_file or grow_file) with the CLI's handling of diagnostics:
 // warnings are printed and the result returned; errors in the grammar are printed and give
 // nullopt; a GrowError without a diagnostic (no such lsystem, ...) becomes a UserError.
@@ -64,6 +58,12 @@ std::optional<ir::Grammar> lower_for_cli(const GrowArgs& a) {
 
 std::optional<Skeleton> grow_for_cli(const GrowArgs& a) {
   return run_reporting<Skeleton>(a, &grow_file);
+}
+
+void print_diagnostics(const SourceManager& sources, DiagnosticSink& diags) {
+  if (diags.all().empty()) return;
+  diags.sort();
+  std::fputs(render_text(sources, diags.all()).c_str(), stderr);
 }
 
 }  // namespace ramus::cli

@@ -36,4 +36,7 @@ std::optional<ir::Grammar> lower_for_cli(const GrowArgs& args);
 // failures throw UserError.
 std::optional<Skeleton> grow_for_cli(const GrowArgs& args);
 
+// Prints the sink's diagnostics (sorted, as text with source lines and carets) to stderr.
+void print_diagnostics(const SourceManager& sources, DiagnosticSink& diags);
+
 }  // namespace ramus::cli

@@ -10,6 +10,7 @@
 #include "compiler/infer/flood/line_fit.h"
 #include "compiler/infer/flood/voxel_grid.h"
 #include "compiler/infer/reconstruct/bases.h"
+#include "compiler/infer/reconstruct/finite_points.h"
 #include "compiler/infer/reconstruct/kdtree.h"
 
 namespace ramus::flood {
@@ -401,40 +402,22 @@ std::size_t bridge_gaps(const VoxelGrid& grid, const std::vector<Vec3>& pts, con
 ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions& o) {
   const auto start = Clock::now();
   ReconstructResult res;
-  res.counts.input_points = cloud.size();
-  res.point_tree.assign(cloud.size(), ReconstructResult::kNoTree);
-  if (cloud.empty()) throw ReconstructError("the point cloud is empty");
   if (!(o.growth_ratio >= 0) || !(o.radius_factor > 0) || o.dimension < 1 || !(o.voxel_size >= 0) ||
       !std::isfinite(o.voxel_size)) {
     throw ReconstructError(
         "invalid flood options (growth ratio >= 0, radius factor > 0, "
         "dimension >= 1, voxel size >= 0)");
   }
-  std::vector<Eigen::Vector3d> epts(cloud.size());
+  bsg::FinitePoints finite_points = bsg::read_finite_points(cloud, res);
+  const std::vector<Eigen::Vector3d>& epts = finite_points.pts;
+  std::vector<std::uint8_t>& keep = finite_points.keep;
+  const std::size_t finite = finite_points.count;
   std::vector<Vec3> pts(cloud.size());
-  std::vector<std::uint8_t> keep(cloud.size(), 0);
-  std::size_t finite = 0;
-  Vec3 lo{1e300, 1e300, 1e300}, hi{-1e300, -1e300, -1e300};
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    pts[i] = Vec3(cloud.positions[i]);
-    epts[i] = to_eigen(pts[i]);
-    keep[i] = is_finite(pts[i]) ? 1 : 0;
-    if (!keep[i]) continue;
-    ++finite;
-    lo = {std::min(lo.x, pts[i].x), std::min(lo.y, pts[i].y), std::min(lo.z, pts[i].z)};
-    hi = {std::max(hi.x, pts[i].x), std::max(hi.y, pts[i].y), std::max(hi.z, pts[i].z)};
-  }
-  res.counts.dropped_points = cloud.size() - finite;
-  if (res.counts.dropped_points) {
-    res.notes.push_back(std::to_string(res.counts.dropped_points) +
-                        " points with non-finite coordinates were ignored");
-  }
-  if (finite < 2) {
-    throw ReconstructError("the point cloud has " + std::to_string(finite) +
-                           " point(s) with finite coordinates; a tree needs many more");
-  }
+  for (std::size_t i = 0; i < cloud.size(); ++i) pts[i] = Vec3(cloud.positions[i]);
+  const Vec3 lo{finite_points.lo.x(), finite_points.lo.y(), finite_points.lo.z()};
+  const Vec3 hi{finite_points.hi.x(), finite_points.hi.y(), finite_points.hi.z()};
   const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-  if (!(extent > 1e-6 * std::max({1.0, std::abs(hi.x), std::abs(hi.y), std::abs(hi.z)}))) {
+  if (finite_points.coincide()) {
     res.notes.push_back("all points coincide: no tree");
     res.timings.total = seconds_since(start);
     return res;

@@ -7,6 +7,7 @@
 
 #include "compiler/infer/reconstruct.h"
 #include "compiler/infer/reconstruct/bases.h"
+#include "compiler/infer/reconstruct/finite_points.h"
 #include "compiler/infer/reconstruct/forest.h"
 #include "compiler/infer/reconstruct/graph.h"
 #include "compiler/infer/reconstruct/inflate.h"
@@ -112,40 +113,16 @@ std::vector<Bsg> refined_trees(const Graph& g, const Forest& f,
 ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions& o) {
   const auto start = Clock::now();
   ReconstructResult res;
-  res.counts.input_points = cloud.size();
-  res.point_tree.assign(cloud.size(), ReconstructResult::kNoTree);
-  if (cloud.empty()) throw ReconstructError("the point cloud is empty");
-  std::vector<Eigen::Vector3d> pts(cloud.size());
-  std::vector<std::uint8_t> keep(cloud.size(), 0);
-  std::size_t finite = 0;
-  for (std::size_t i = 0; i < cloud.size(); ++i) {
-    const Vec3f& p = cloud.positions[i];
-    pts[i] = Eigen::Vector3d(p.x, p.y, p.z);
-    keep[i] = is_finite(p) ? 1 : 0;
-    finite += keep[i];
-  }
-  res.counts.dropped_points = cloud.size() - finite;
-  if (res.counts.dropped_points) {
-    res.notes.push_back(std::to_string(res.counts.dropped_points) +
-                        " points with non-finite coordinates were ignored");
-  }
-  if (finite < 2) {
-    throw ReconstructError("the point cloud has " + std::to_string(finite) +
-                           " point(s) with finite coordinates; a tree needs many more");
+  FinitePoints finite_points = read_finite_points(cloud, res);
+  std::vector<Eigen::Vector3d>& pts = finite_points.pts;
+  std::vector<std::uint8_t>& keep = finite_points.keep;
+  if (finite_points.coincide()) {
+    res.notes.push_back("all points coincide: no tree");
+    res.timings.total = seconds_since(start);
+    return res;
   }
   // The height sets the base-finding scales; the voxel is chosen after terrain removal, so a
   // sparse ground does not coarsen the grid of the trees.
-  {
-    Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
-    for (std::size_t i = 0; i < pts.size(); ++i) {
-      if (keep[i]) lo = lo.cwiseMin(pts[i]), hi = hi.cwiseMax(pts[i]);
-    }
-    if (!((hi - lo).maxCoeff() > 1e-6 * std::max(1.0, hi.cwiseAbs().maxCoeff()))) {
-      res.notes.push_back("all points coincide: no tree");
-      res.timings.total = seconds_since(start);
-      return res;
-    }
-  }
   ReconstructOptions height_only = o;
   height_only.voxel_size = 1.0;
   Scale scale = choose_scale(pts, keep, height_only);
@@ -166,7 +143,7 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (bases.terrain[i]) keep[i] = 0, ++res.counts.terrain_points;
   }
-  if (res.counts.terrain_points < finite) {
+  if (res.counts.terrain_points < finite_points.count) {
     scale.voxel = choose_scale(pts, keep, o).voxel;
     res.voxel_size = scale.voxel;
   }
