@@ -172,3 +172,25 @@ TEST_CASE("C API: the seed reaches a grammar that draws random numbers", "[runti
   }
   CHECK(differ);
 }
+
+TEST_CASE("C API: a stripped image grows the same skeleton as its source", "[runtime]") {
+  const std::string example = GENERATE(as<std::string>{}, "trees/broadleaf.ramus",
+                                       "abop/fig1_31a.ramus", "abop/fig2_6a_monopodial.ramus");
+  INFO(example);
+  ramus::SourceManager sm;
+  ramus::DiagnosticSink diags;
+  ramus::RmbEncodeOptions o;
+  o.strip = true;
+  const std::string bytes =
+      ramus::encode_rmb(ramus::lower_file(path_of(example), {}, sm, diags), o);
+  REQUIRE(bytes.size() < encode_example(example).size());
+  char err[256] = "unset";
+  GrammarPtr g(ramus_load(bytes.data(), bytes.size(), err, sizeof err), ramus_free_grammar);
+  INFO(err);
+  REQUIRE(g);
+  const std::uint64_t seed = ramus_grammar_seed(g.get());
+  SkeletonPtr s(ramus_grow(g.get(), -1, seed, err, sizeof err), ramus_free_skeleton);
+  INFO(err);
+  REQUIRE(s);
+  require_same(grow_source(example, seed), s.get());
+}
