@@ -54,28 +54,18 @@ void print_row(const char* method, const std::string& path, int stations, std::s
 // The accuracy harness of backends/scanner/harness.h, run for both methods on the same scan.
 void accuracy(const std::string& path) {
   const Skeleton truth = grow(path);
-  Vec3 lo, hi;
-  truth.bounds(lo, hi);
-  const double h = std::max(hi.z - lo.z, 1e-6);
   for (int stations : {1, 3}) {
-    scanner::ScanOptions so;
-    so.from = scanner::stations_around(truth, stations);
-    so.noise = 0.003 * h;
-    so.density = 3000;
-    const scanner::ScanResult scan = scanner::scan_skeleton(truth, so);
+    scanner::HarnessCase hc;
+    hc.stations = stations;
     for (const char* method : {"bsg", "flood"}) {
-      const auto t0 = Clock::now();
-      const ReconstructResult r = std::strcmp(method, "bsg") == 0
-                                      ? reconstruct(scan.cloud)
-                                      : flood::flood_reconstruct(scan.cloud);
-      const double seconds = seconds_since(t0);
-      CompareOptions co;
-      co.radius_factor = 2.0;
-      co.distance = 0.01 * h;
-      co.spacing = 0.002 * h;
-      co.min_radius = 0.5 * r.voxel_size;
-      print_row(method, path, stations, scan.cloud.size(), r,
-                compare_skeletons({truth}, r.trees, co), seconds);
+      ReconstructResult last;
+      const scanner::HarnessResult h =
+          scanner::run_harness(truth, hc, [&](const PointCloud& cloud) {
+            last = std::strcmp(method, "bsg") == 0 ? reconstruct(cloud)
+                                                   : flood::flood_reconstruct(cloud);
+            return last;
+          });
+      print_row(method, path, stations, h.points, last, h.at_radius, h.seconds);
     }
   }
 }

@@ -20,6 +20,12 @@ std::vector<Vec3> stations_around(const Skeleton& tree, int count) {
 
 HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
                           const ReconstructOptions& options) {
+  return run_harness(truth, c,
+                     [&](const PointCloud& cloud) { return reconstruct(cloud, options); });
+}
+
+HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
+                          const Reconstructor& method) {
   Vec3 lo, hi;
   truth.bounds(lo, hi);
   const double h = std::max(hi.z - lo.z, 1e-6);
@@ -33,7 +39,7 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
   HarnessResult r;
   r.points = scan.cloud.size();
   const auto t0 = std::chrono::steady_clock::now();
-  const ReconstructResult rec = reconstruct(scan.cloud, options);
+  const ReconstructResult rec = method(scan.cloud);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   r.trees = rec.trees.size();
   CompareOptions co;

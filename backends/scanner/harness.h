@@ -3,6 +3,7 @@
 // and bench/bench_reconstruct.cpp.
 #pragma once
 
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -39,5 +40,9 @@ std::vector<Vec3> stations_around(const Skeleton& tree, int count);
 // radii are floored at half the scan's point spacing (1 / sqrt(density)) at the tree.
 HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
                           const ReconstructOptions& options = {});
+
+// The same with any reconstruction method (the BSG pipeline above, or the flood fill).
+using Reconstructor = std::function<ReconstructResult(const PointCloud&)>;
+HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c, const Reconstructor& method);
 
 }  // namespace ramus::scanner
