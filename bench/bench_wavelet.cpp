@@ -20,6 +20,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -62,14 +63,20 @@ std::string base_name(const std::string& path) {
   return slash == std::string::npos ? path : path.substr(slash + 1);
 }
 
-void bench_scan(const std::string& path, const std::vector<int>& grids, int repeat) {
-  PointCloud cloud;
+// The scan at `path`, or nullopt after printing a "skipped" table row with the reader's message.
+std::optional<PointCloud> read_or_skip(const std::string& path) {
   try {
-    cloud = read_point_cloud(path);
+    return read_point_cloud(path);
   } catch (const std::exception& e) {
     std::printf("| %s | skipped: %s |\n", base_name(path).c_str(), e.what());
-    return;
+    return std::nullopt;
   }
+}
+
+void bench_scan(const std::string& path, const std::vector<int>& grids, int repeat) {
+  const std::optional<PointCloud> read = read_or_skip(path);
+  if (!read) return;
+  const PointCloud& cloud = *read;
   for (int side : grids) {
     AlignedCloud aligned;
     VoxelGrid grid;
@@ -107,13 +114,9 @@ void bench_scan(const std::string& path, const std::vector<int>& grids, int repe
 
 // The whole inference, stage by stage (the run whose total is the median of `repeat`).
 void bench_infer(const std::string& path, const std::vector<int>& grids, int repeat) {
-  PointCloud cloud;
-  try {
-    cloud = read_point_cloud(path);
-  } catch (const std::exception& e) {
-    std::printf("| %s | skipped: %s |\n", base_name(path).c_str(), e.what());
-    return;
-  }
+  const std::optional<PointCloud> read = read_or_skip(path);
+  if (!read) return;
+  const PointCloud& cloud = *read;
   for (int side : grids) {
     std::vector<std::pair<double, WaveletInference>> runs;
     for (int i = 0; i < repeat; ++i) {
@@ -217,13 +220,9 @@ void bench_fidelity(const std::vector<std::string>& grammars, const std::vector<
     }
   }
   for (const std::string& path : scans) {
-    PointCloud cloud;
-    try {
-      cloud = read_point_cloud(path);
-    } catch (const std::exception& e) {
-      std::printf("| %s | skipped: %s |\n", base_name(path).c_str(), e.what());
-      continue;
-    }
+    const std::optional<PointCloud> read = read_or_skip(path);
+    if (!read) continue;
+    const PointCloud& cloud = *read;
     for (int side : grids) fidelity_of_cloud(base_name(path), cloud, side, nullptr);
   }
 }

@@ -141,39 +141,59 @@ const PieceMesh& lod_mesh(const PieceSet& set, std::uint32_t type, std::size_t l
   return t.lods[lod];
 }
 
+// Vertex attributes of one primitive, filled piece by piece.
+struct SkinnedVertices {
+  std::vector<float> pos, nrm, uv, wts;
+  std::vector<std::uint32_t> jts, idx;
+
+  std::uint32_t size() const { return std::uint32_t(pos.size() / 3); }
+
+  // Appends vertex v of `m` at `position` with `normal`, its joints offset by `bone_offset`.
+  void add(const PieceMesh& m, std::size_t v, const Vec3& position, const Vec3& normal,
+           std::uint32_t bone_offset) {
+    for (int c = 0; c < 3; ++c) pos.push_back(float(position[c]));
+    const Vec3 n = normalized(normal);
+    for (int c = 0; c < 3; ++c) nrm.push_back(float(n[c]));
+    uv.push_back(m.uvs.at(v)[0]);
+    uv.push_back(m.uvs.at(v)[1]);
+    const SkinVertex s = normalize_skin(m.joints.at(v), m.weights.at(v), bone_offset);
+    jts.insert(jts.end(), s.joints.begin(), s.joints.end());
+    wts.insert(wts.end(), s.weights.begin(), s.weights.end());
+  }
+
+  // The triangle primitive: JOINTS_0/WEIGHTS_0 when `skinned`, otherwise the custom
+  // _JOINTS_0/_WEIGHTS_0 for instancing shaders (whose weights then carry bounds, as every
+  // non-skin float attribute must).
+  tinygltf::Primitive primitive(Builder& b, int material, bool wide_joints, bool skinned) const {
+    tinygltf::Primitive prim;
+    prim.mode = TINYGLTF_MODE_TRIANGLES;
+    prim.material = material;
+    prim.attributes["POSITION"] =
+        b.floats(pos, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    prim.attributes["NORMAL"] =
+        b.floats(nrm, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    prim.attributes["TEXCOORD_0"] =
+        b.floats(uv, 2, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    prim.attributes[skinned ? "JOINTS_0" : "_JOINTS_0"] = b.joints(jts, wide_joints);
+    prim.attributes[skinned ? "WEIGHTS_0" : "_WEIGHTS_0"] =
+        b.floats(wts, 4, TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER, !skinned);
+    prim.indices = b.add_indices(idx, size());
+    return prim;
+  }
+};
+
 // A piece type's mesh in piece space; `skinned` adds JOINTS_0/WEIGHTS_0 (piece-local joints),
 // otherwise the same binding goes into the custom _JOINTS_0/_WEIGHTS_0 for instancing shaders.
 int add_piece_mesh(Builder& b, const PieceSet& set, std::uint32_t type, std::size_t lod,
                    int material, bool skinned) {
   const PieceMesh& m = lod_mesh(set, type, lod);
-  std::vector<float> pos, nrm, uv, wts;
-  std::vector<std::uint32_t> jts;
+  SkinnedVertices sv;
   for (std::size_t v = 0; v < m.positions.size(); ++v) {
-    for (int c = 0; c < 3; ++c) pos.push_back(float(m.positions[v][c]));
-    const Vec3 n = normalized(m.normals.at(v));
-    for (int c = 0; c < 3; ++c) nrm.push_back(float(n[c]));
-    uv.push_back(m.uvs.at(v)[0]);
-    uv.push_back(m.uvs.at(v)[1]);
-    const SkinVertex s = normalize_skin(m.joints.at(v), m.weights.at(v), 0);
-    jts.insert(jts.end(), s.joints.begin(), s.joints.end());
-    wts.insert(wts.end(), s.weights.begin(), s.weights.end());
+    sv.add(m, v, m.positions[v], m.normals.at(v), 0);
   }
-  std::vector<std::uint32_t> idx;
-  append_triangles(m, 0, idx);
-  tinygltf::Primitive prim;
-  prim.mode = TINYGLTF_MODE_TRIANGLES;
-  prim.material = material;
-  prim.attributes["POSITION"] =
-      b.floats(pos, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-  prim.attributes["NORMAL"] =
-      b.floats(nrm, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-  prim.attributes["TEXCOORD_0"] =
-      b.floats(uv, 2, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  append_triangles(m, 0, sv.idx);
   const bool wide = set.types[type].joints.size() > 255;
-  prim.attributes[skinned ? "JOINTS_0" : "_JOINTS_0"] = b.joints(jts, wide);
-  prim.attributes[skinned ? "WEIGHTS_0" : "_WEIGHTS_0"] =
-      b.floats(wts, 4, TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER, !skinned);
-  prim.indices = b.add_indices(idx, m.positions.size());
+  const tinygltf::Primitive prim = sv.primitive(b, material, wide, skinned);
   tinygltf::Mesh mesh;
   mesh.name = set.types[type].name;
   mesh.primitives.push_back(prim);
@@ -338,8 +358,7 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
     world[g] = layout.bone_world[g].matrix();
     ibm[g] = layout.bone_world[g].inverse().matrix();
   }
-  std::vector<float> pos, nrm, uv, wts;
-  std::vector<std::uint32_t> jts, idx;
+  SkinnedVertices sv;
   Value::Array pieces;
   std::size_t first_quad = 0;
   for (const OutputInstance& inst : layout.instances) {
@@ -348,18 +367,11 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
     const std::span<const Mat4> tree_world(world.data() + layout.tree_bone_base[inst.tree],
                                            tree.bones.size());
     const SkinnedPiece sp = skin_piece(set, tree, tree_world, inst.piece, o.lod);
-    const std::uint32_t base = std::uint32_t(pos.size() / 3);
+    const std::uint32_t base = sv.size();
     for (std::size_t v = 0; v < m.positions.size(); ++v) {
-      for (int c = 0; c < 3; ++c) pos.push_back(float(sp.positions[v][c]));
-      const Vec3 n = normalized(sp.normals[v]);
-      for (int c = 0; c < 3; ++c) nrm.push_back(float(n[c]));
-      uv.push_back(m.uvs[v][0]);
-      uv.push_back(m.uvs[v][1]);
-      const SkinVertex s = normalize_skin(m.joints[v], m.weights[v], inst.bone_offset);
-      jts.insert(jts.end(), s.joints.begin(), s.joints.end());
-      wts.insert(wts.end(), s.weights.begin(), s.weights.end());
+      sv.add(m, v, sp.positions[v], sp.normals[v], inst.bone_offset);
     }
-    append_triangles(m, base, idx);
+    append_triangles(m, base, sv.idx);
     Value::Object p;
     p["tree"] = Value(int(inst.tree));
     p["piece"] = Value(int(inst.piece));
@@ -371,20 +383,8 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
     pieces.emplace_back(std::move(p));
     first_quad += m.quads.size();
   }
-  if (idx.empty()) throw PiecesError("nothing to write: the forest has no geometry");
-  tinygltf::Primitive prim;
-  prim.mode = TINYGLTF_MODE_TRIANGLES;
-  prim.material = material;
-  prim.attributes["POSITION"] =
-      b.floats(pos, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-  prim.attributes["NORMAL"] =
-      b.floats(nrm, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-  prim.attributes["TEXCOORD_0"] =
-      b.floats(uv, 2, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-  prim.attributes["JOINTS_0"] = b.joints(jts, true);
-  prim.attributes["WEIGHTS_0"] =
-      b.floats(wts, 4, TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER, false);
-  prim.indices = b.add_indices(idx, pos.size() / 3);
+  if (sv.idx.empty()) throw PiecesError("nothing to write: the forest has no geometry");
+  const tinygltf::Primitive prim = sv.primitive(b, material, true, true);
   auto& model = b.model();
   tinygltf::Mesh mesh;
   mesh.name = o.name;

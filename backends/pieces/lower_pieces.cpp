@@ -177,8 +177,9 @@ class PiecesLowering {
       error(DiagCode::UnknownPieceKind, c.kind.span, "unknown piece kind '" + kind + "'");
     }
     if (!d) {
-      // Keep indices stable for the rules: an empty placeholder is never used since the caller
-      // stops at diagnostics.has_errors().
+      // A piece type without meshes takes the failed one's index, so the attach rules that name
+      // later pieces keep theirs; lowering has reported the error, and the caller assembles
+      // nothing once diagnostics.has_errors().
       PieceType t;
       t.name = name;
       set.types.push_back(std::move(t));

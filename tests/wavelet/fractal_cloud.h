@@ -26,10 +26,10 @@ inline AlignedCloud fractal_tree_cloud(std::uint64_t seed, int depth = 6, double
     double length, radius;
     int level;
   };
-  std::vector<Branch> todo{{Vec3(0, 0, 0), Vec3(0, 0, 1), 1.0, 0.05, 0}};
-  while (!todo.empty()) {
-    const Branch b = todo.back();
-    todo.pop_back();
+  std::vector<Branch> pending{{Vec3(0, 0, 0), Vec3(0, 0, 1), 1.0, 0.05, 0}};
+  while (!pending.empty()) {
+    const Branch b = pending.back();
+    pending.pop_back();
     const int n = int(b.length * per_metre) + 1;
     for (int i = 0; i < n; ++i) {
       const double t = rng.uniform01() * b.length;
@@ -41,7 +41,7 @@ inline AlignedCloud fractal_tree_cloud(std::uint64_t seed, int depth = 6, double
     const Vec3 axis = b.level % 2 == 0 ? Vec3(1, 0, 0) : Vec3(0, 1, 0);
     for (double sign : {-1.0, 1.0}) {
       const Vec3 d = normalized(rotate(b.dir, axis, sign * 35.0 * 3.14159265358979 / 180));
-      todo.push_back({tip, d, b.length * 0.65, b.radius * 0.7, b.level + 1});
+      pending.push_back({tip, d, b.length * 0.65, b.radius * 0.7, b.level + 1});
     }
   }
   // The lowest point is the root: shift so that it is at the origin, as align_cloud does.

@@ -378,8 +378,8 @@ InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& op
   fit_budget(rules, out.groups, options);
 
   // The axiom: the first internode of the tree with the most length (when the root forks, the
-  // one carrying the most length above it: a reconstructed root often has short stubs beside
-  // the trunk), turned from the turtle's initial frame like the real trunk.
+  // one carrying the most length above it: a reconstructed root often has short side branches
+  // beside the trunk), turned from the turtle's initial frame like the real trunk.
   std::size_t tree = 0;
   for (std::size_t t = 1; t < rules.tree_length.size(); ++t) {
     if (rules.tree_length[t] > rules.tree_length[tree]) tree = t;
