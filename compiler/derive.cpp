@@ -48,11 +48,7 @@ struct Pass {
       if (!match_production(g, p, in, ctx, i, slots)) continue;
       try {
         if (p.guard != ir::kNoCode && eval(g, p.guard, slots, rng) == 0) continue;
-        if (p.alt_end - p.alt_begin == 1 &&
-            g.alternatives[p.alt_begin].probability == ir::kNoCode) {
-          return p.alt_begin + 1;
-        }
-        return pick(p, slots, rng) + 1;
+        return alternative(p, slots, rng);
       } catch (const ExprError& err) {
         throw DeriveError(describe(g, p, err, info, i));
       }
@@ -94,14 +90,20 @@ struct Pass {
     if (chosen == e) return 0;
     const ir::Production& p = g.productions[table.index[chosen]];
     match_production(g, p, in, ctx, i, slots);  // the slots of the chosen production
-    if (p.alt_end - p.alt_begin == 1 && g.alternatives[p.alt_begin].probability == ir::kNoCode) {
-      return p.alt_begin + 1;
-    }
     try {
-      return pick(p, slots, rng) + 1;
+      return alternative(p, slots, rng);
     } catch (const ExprError& err) {
       throw DeriveError(describe(g, p, err, info, i));
     }
+  }
+
+  // The chosen production's alternative + 1: its only one when deterministic (no draw), else the
+  // stochastic choice.
+  std::uint32_t alternative(const ir::Production& p, const double* slots, LazyRng& rng) const {
+    if (p.alt_end - p.alt_begin == 1 && g.alternatives[p.alt_begin].probability == ir::kNoCode) {
+      return p.alt_begin + 1;
+    }
+    return pick(p, slots, rng) + 1;
   }
 
   // Stochastic choice: alternative k with probability p_k / sum(p) (ABOP ch. 1.7).
