@@ -24,6 +24,7 @@
 #include "compiler/grow.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
+#include "tests/compiler/reconstruct_fixtures.h"
 
 using namespace ramus;
 
@@ -55,6 +56,12 @@ void set_option(ReconstructOptions& o, const std::string& kv) {
     o.max_gap = v;
   else if (k == "contraction")
     o.contraction_steps = int(v);
+  else if (k == "axis_levels")
+    o.axis_levels = int(v);
+  else if (k == "axis_linearity")
+    o.axis_linearity = v;
+  else if (k == "axis_passes")
+    o.axis_passes = int(v);
   else if (k == "iterations")
     o.max_iterations = int(v);
   else if (k == "overlap")
@@ -76,7 +83,8 @@ std::vector<int> g_stations = {1, 3};  // --stations N: only N stations
 std::string g_dump;  // --dump PREFIX: writes PREFIX<tree>-<stations>.truth.json / .rec.json
 
 void accuracy(const std::string& path, const scanner::HarnessCase& base) {
-  const Skeleton t = grow(path);
+  // "synthetic": the thick-branched test tree of tests/compiler/reconstruct_fixtures.h.
+  const Skeleton t = path == "synthetic" ? test::synthetic_tree(7, {0, 0, 0}) : grow(path);
   for (int stations : g_stations) {
     scanner::HarnessCase c = base;
     c.stations = stations;

@@ -2,27 +2,17 @@
 // Positions are float relative to PointCloud::offset; a file has no such offset, so when the
 // offset is non-zero the writers emit world coordinates in double precision (exact: offset +
 // float is representable in double for any offset a reader chooses), otherwise float.
-#include <bit>
 #include <charconv>
 #include <cstring>
 #include <string>
 
 #include "core/atomic_file.h"
+#include "core/little_endian.h"
 #include "core/number_text.h"
 #include "formats/point_cloud_io.h"
 
 namespace ramus {
 namespace {
-
-template <typename T>
-void put_le(std::string& out, T v) {
-  char b[sizeof(T)];
-  std::memcpy(b, &v, sizeof(T));
-  if constexpr (std::endian::native == std::endian::big) {
-    for (std::size_t i = 0; i < sizeof(T) / 2; ++i) std::swap(b[i], b[sizeof(T) - 1 - i]);
-  }
-  out.append(b, sizeof(T));
-}
 
 // Shortest decimal that reads back to the same value.
 template <typename T>
@@ -94,16 +84,16 @@ std::string point_cloud_to_ply(const PointCloud& c, bool binary) {
     if (binary) {
       for (int k = 0; k < 3; ++k) {
         if (dbl) {
-          put_le(out, c.offset[k] + double(c.positions[i][k]));
+          append_little_endian(out, c.offset[k] + double(c.positions[i][k]));
         } else {
-          put_le(out, c.positions[i][k]);
+          append_little_endian(out, c.positions[i][k]);
         }
       }
       if (n) {
-        for (int k = 0; k < 3; ++k) put_le(out, c.normals[i][k]);
+        for (int k = 0; k < 3; ++k) append_little_endian(out, c.normals[i][k]);
       }
-      if (in) put_le(out, c.intensity[i]);
-      if (cl) put_le(out, c.classification[i]);
+      if (in) append_little_endian(out, c.intensity[i]);
+      if (cl) append_little_endian(out, c.classification[i]);
       continue;
     }
     put_point_text(out, c, i);

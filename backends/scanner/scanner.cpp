@@ -44,7 +44,8 @@ Window window_of(const Vec3& s, const Vec3& lo, const Vec3& hi) {
 }
 
 void scan_station(const TriangleBvh& bvh, const Vec3& s, std::uint64_t station,
-                  const ScanOptions& o, std::vector<Vec3>& out, std::uint64_t& rays) {
+                  const ScanOptions& o, std::vector<Vec3>& out, std::vector<std::uint32_t>& tris,
+                  std::uint64_t& rays) {
   Vec3 lo, hi;
   bvh.bounds(lo, hi);
   const Window w = window_of(s, lo, hi);
@@ -54,6 +55,7 @@ void scan_station(const TriangleBvh& bvh, const Vec3& s, std::uint64_t station,
   if (solid / (step * step) > double(o.max_rays)) step = std::sqrt(solid / double(o.max_rays));
   const auto rows = std::size_t(std::ceil((w.el1 - w.el0) / step)) + 1;
   std::vector<std::vector<Vec3>> hits(rows);
+  std::vector<std::vector<std::uint32_t>> hit_tris(rows);
   std::vector<std::uint64_t> cast(rows, 0);
   tbb::parallel_for(std::size_t(0), rows, [&](std::size_t r) {
     const double el = w.el0 + double(r) * step;
@@ -70,10 +72,12 @@ void scan_station(const TriangleBvh& bvh, const Vec3& s, std::uint64_t station,
       Rng rng = Rng::stream(o.seed, station, (std::uint64_t(r) << 32) | c);
       const double t = o.noise > 0 ? h.t + rng.normal(0, o.noise) : h.t;
       hits[r].push_back(s + d * t);
+      hit_tris[r].push_back(h.triangle);
     }
   });
   for (std::size_t r = 0; r < rows; ++r) {
     out.insert(out.end(), hits[r].begin(), hits[r].end());
+    tris.insert(tris.end(), hit_tris[r].begin(), hit_tris[r].end());
     rays += cast[r];
   }
 }
@@ -102,7 +106,7 @@ ScanResult scan_triangles(const std::vector<Vec3>& vertices,
   std::vector<Vec3> points;
   for (std::size_t k = 0; k < stations.size(); ++k) {
     if (!is_finite(stations[k])) throw ScanError("a scanner position is not finite");
-    scan_station(bvh, stations[k], k, o, points, res.rays);
+    scan_station(bvh, stations[k], k, o, points, res.triangle, res.rays);
   }
   res.cloud.offset = Vec3{std::round((lo.x + hi.x) / 2), std::round((lo.y + hi.y) / 2),
                           std::round((lo.z + hi.z) / 2)};
@@ -113,10 +117,19 @@ ScanResult scan_triangles(const std::vector<Vec3>& vertices,
   return res;
 }
 
-ScanResult scan_skeleton(const Skeleton& skeleton, const ScanOptions& o) {
+namespace {
+
+// The mesh scan_skeleton ray casts.
+mesh::TreeMesh scanned_mesh(const Skeleton& skeleton) {
   mesh::MeshOptions mo;
   mo.max_radial_segments = 16;
-  const mesh::TreeMesh m = mesh::build_tree_mesh(skeleton, mo);
+  return mesh::build_tree_mesh(skeleton, mo);
+}
+
+}  // namespace
+
+ScanResult scan_skeleton(const Skeleton& skeleton, const ScanOptions& o) {
+  const mesh::TreeMesh m = scanned_mesh(skeleton);
   std::vector<Vec3> vertices;
   std::vector<std::uint32_t> indices;
   auto append = [&](const mesh::MeshPart& part) {
@@ -127,6 +140,14 @@ ScanResult scan_skeleton(const Skeleton& skeleton, const ScanOptions& o) {
   append(m.bark);
   if (o.leaves) append(m.leaves);
   return scan_triangles(vertices, indices, o);
+}
+
+std::vector<std::uint8_t> leaf_returns(const Skeleton& skeleton, const ScanResult& scan) {
+  // scan_skeleton appends the bark triangles first, then the leaf cards.
+  const std::size_t bark = scanned_mesh(skeleton).bark.triangle_count();
+  std::vector<std::uint8_t> leaf(scan.triangle.size());
+  for (std::size_t i = 0; i < leaf.size(); ++i) leaf[i] = scan.triangle[i] >= bark ? 1 : 0;
+  return leaf;
 }
 
 Vec3 parse_position(const std::string& text) {

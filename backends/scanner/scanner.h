@@ -30,6 +30,7 @@ struct ScanOptions {
 struct ScanResult {
   PointCloud cloud;  // scanner = the first station
   std::uint64_t rays = 0;
+  std::vector<std::uint32_t> triangle;  // per point: the index of the triangle its ray hit
 };
 
 struct ScanError : std::runtime_error {
@@ -42,6 +43,11 @@ ScanResult scan_triangles(const std::vector<Vec3>& vertices,
 
 // Meshes the skeleton with the mesh back end (bark tubes, leaves when asked) and scans it.
 ScanResult scan_skeleton(const Skeleton& skeleton, const ScanOptions& options);
+
+// Ground truth for wood/leaf separation: per point of `scan` = scan_skeleton(skeleton, options),
+// 1 where the ray hit a leaf card, 0 where it hit bark. Meshes the skeleton again, as
+// scan_skeleton does, to find where the leaf triangles start.
+std::vector<std::uint8_t> leaf_returns(const Skeleton& skeleton, const ScanResult& scan);
 
 // Parses "x,y,z".
 Vec3 parse_position(const std::string& text);

@@ -11,7 +11,7 @@
 #include "backends/mesh/openmesh_writer.h"
 #include "backends/mesh/tree_mesh.h"
 #include "compiler/driver/command.h"
-#include "compiler/infer/flood/flood_skeleton.h"
+#include "compiler/driver/reconstruct_choice.h"
 #include "compiler/infer/merge/branch_merge.h"
 #include "compiler/infer/merge/merge_angles.h"
 #include "compiler/infer/reconstruct.h"
@@ -23,12 +23,11 @@ namespace {
 
 struct ReconstructArgs {
   std::string scan, output, trees = "all";
-  std::string method = "bsg";  // bsg (Livny et al.) or flood (voxel flood fill)
-  std::string merge_angles;    // "alpha,beta" of branch merging; empty: no merging
-  double voxel = 0;
-  bool fine = false;  // the fine preset of docs/reconstruction.md (Accuracy)
+  ReconstructChoice method;  // --method, --voxel
+  std::string merge_angles;  // "alpha,beta" of branch merging; empty: no merging
   bool no_leaves = false;
   std::uint64_t seed = 1;
+  std::string leaves_in_scan = "keep";  // foliage in the scan: keep, remove or auto
 };
 
 // All trees as one forest (a Skeleton may have several roots).
@@ -72,30 +71,20 @@ int run_reconstruct(const ReconstructArgs& a, const GlobalOptions& global) {
     throw UserError(e.what());
   }
   ReconstructOptions o;
-  o.voxel_size = a.voxel;
-  if (a.fine) {
-    // One point spacing per voxel resolves twigs of 1-1.3 cm; fewer contraction steps and rounds
-    // keep curved whips in place (docs/reconstruction.md, Accuracy).
-    o.voxel_spacings = 1;
-    o.voxel_height_floor = 1.0 / 1000;
-    o.contraction_steps = 10;
-    o.max_iterations = 2;
-  }
   o.leaves = !a.no_leaves;
+  o.leaves_in_scan = a.leaves_in_scan == "keep"     ? LeafHandling::kKeep
+                     : a.leaves_in_scan == "remove" ? LeafHandling::kRemove
+                                                    : LeafHandling::kAuto;
   o.seed = a.seed;
   ReconstructResult r;
   try {
-    if (a.method == "flood") {
-      flood::FloodOptions fo;
-      fo.voxel_size = a.voxel;
-      r = flood::flood_reconstruct(cloud, fo);
-    } else {
-      r = reconstruct(cloud, o);
-    }
+    r = run_reconstruction(cloud, a.method, o);
   } catch (const ReconstructError& e) {
     throw UserError(a.scan + ": " + e.what());
   }
-  for (std::size_t i = 0; i + 1 < r.notes.size(); ++i) {
+  // The last note says why no tree was found, when none was: it becomes the error below.
+  for (std::size_t i = 0; i < r.notes.size(); ++i) {
+    if (r.trees.empty() && i + 1 == r.notes.size()) break;
     std::fprintf(stderr, "ramus: note: %s\n", r.notes[i].c_str());
   }
   if (r.trees.empty()) {
@@ -150,19 +139,14 @@ void add_reconstruct(CLI::App& app, const GlobalOptions& global, std::function<i
           "FILE", "output file"));
   sub->add_option("--trees", args->trees, "all trees in the scan, or only the largest one")
       ->check(CLI::IsMember({"one", "all"}));
-  sub->add_option("--voxel", args->voxel, "voxel size of the graph (default: from the data)")
-      ->check(CLI::NonNegativeNumber);
-  sub->add_flag(
-      "--fine", args->fine,
-      "bsg: one point spacing per voxel, 10 contraction steps, 2 rounds (more accurate on "
-      "thin branches of dense scans, about twice as slow; thick branches may keep "
-      "parallel paths)");
   sub->add_flag("--no-leaves", args->no_leaves, "do not synthesize leaves at the branch tips");
+  sub->add_option("--leaves-in-scan", args->leaves_in_scan,
+                  "foliage in the scan: keep every point (default), remove it first (wood/leaf "
+                  "separation), or auto: remove it when at least 25% of the points look like "
+                  "leaves")
+      ->check(CLI::IsMember({"auto", "keep", "remove"}));
   sub->add_option("--seed", args->seed, "seed of the synthesized leaves");
-  sub->add_option("--method", args->method,
-                  "bsg: branch-structure graph (Livny et al.); flood: voxel flood fill (faster, "
-                  "no leaves)")
-      ->check(CLI::IsMember({"bsg", "flood"}));
+  add_reconstruct_choice_options(*sub, args->method, "--method", "");
   sub->add_option("--merge", args->merge_angles,
                   "merge branches: ALPHA,BETA degrees (collinear chains below ALPHA, sibling "
                   "leaf branches below BETA), e.g. 10,15")

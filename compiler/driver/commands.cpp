@@ -16,6 +16,7 @@ void add_inspect(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_build(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_preview(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_reconstruct(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_classify(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_scan(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_dump(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_decompile(CLI::App&, const GlobalOptions&, std::function<int()>&);
@@ -38,6 +39,7 @@ const std::vector<CommandSpec>& command_table() {
       {"build", add_build},
       {"preview", add_preview},
       {"reconstruct", add_reconstruct},
+      {"classify", add_classify},
       {"scan", add_scan},
       {"dump", add_dump},
       {"decompile", add_decompile},

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "compiler/infer/wood/wood_separation.h"
 #include "core/point_cloud.h"
 #include "core/skeleton.h"
 #include "core/vec3.h"
@@ -27,14 +28,22 @@ namespace ramus {
 struct ReconstructOptions {
   // Points are merged on a voxel grid of this edge length before the graph is built.
   double voxel_size = 0;  // auto: from the median point spacing and the cloud's height
-  // Auto voxel: this many median point spacings, but at least this fraction of the height.
-  // 1 and 1/1000, with contraction_steps = 10 and max_iterations = 2, resolve thin twigs much
-  // better (docs/reconstruction.md, Accuracy) but leave parallel paths on thick branches.
-  double voxel_spacings = 2.5;
-  double voxel_height_floor = 1.0 / 400;
-  int neighbours = 10;         // k of the k-nearest-neighbour graph (4.1)
-  double max_gap = 0;          // largest gap bridged between graph components; auto: 8% of height
-  int contraction_steps = 20;  // neighbour-mean steps that draw bark samples towards branch axes
+  // Auto voxel: this many median point spacings, but at least this fraction of the height. One
+  // spacing keeps twigs of 1-1.3 cm apart from their neighbours; the axis projection below is
+  // what lets thick branches at this resolution still collapse to one chain.
+  double voxel_spacings = 1.0;
+  double voxel_height_floor = 1.0 / 1000;
+  int neighbours = 10;  // k of the k-nearest-neighbour graph (4.1)
+  double max_gap = 0;   // largest gap bridged between graph components; auto: 8% of height
+  // Thickness-adaptive projection onto branch axes before the Dijkstra forest: the ball around
+  // each cell of grids of 2, 4, 8, ... voxels (this many levels; 0 = off) grows level by level
+  // until its samples are linear (lambda_1 >= axis_linearity * lambda_2); the vertex moves onto
+  // that ball's principal line, refitted axis_passes - 1 times from its projection
+  // (docs/reconstruction.md, Deviations).
+  int axis_levels = 4;
+  double axis_linearity = 4.0;
+  int axis_passes = 2;
+  int contraction_steps = 3;  // neighbour-mean steps after it: smooth the projected samples
 
   // Tree bases (4.1).
   bool remove_terrain = true;  // drop the lowest layer of points (the ground) before the graph
@@ -49,7 +58,7 @@ struct ReconstructOptions {
   std::vector<Vec3> roots;  // world positions of tree bases; when set, base detection is skipped
 
   // Refinement (4.2).
-  int max_iterations = 3;          // Dijkstra + refinement rounds at most (paper: 2-3 suffice)
+  int max_iterations = 2;          // Dijkstra + refinement rounds at most (paper: 2-3 suffice)
   double convergence = 0.01;       // stop when fewer than this fraction of parents change
   double reweight_strength = 0.5;  // aligned edges cost (1 - strength |cos|) of their weight
 
@@ -66,6 +75,10 @@ struct ReconstructOptions {
   int min_leaves = 20, max_leaves = 50;
   double leaf_sphere = 0;  // radius of the sphere leaves are scattered in; auto: 2 voxels
   std::uint64_t seed = 1;
+
+  // Foliage in the scan (docs/wood-separation.md): kept, removed by the unsupervised wood/leaf
+  // separation before anything else, or removed when the separation finds it a large share.
+  LeafHandling leaves_in_scan = LeafHandling::kKeep;
 };
 
 struct ReconstructTimings {

@@ -173,29 +173,3 @@ TEST_CASE("ramus reconstruct: bad scans give clear errors, never a crash", "[rec
     CHECK_FALSE(fs::exists(out));
   }
 }
-
-TEST_CASE("ramus reconstruct --fine: a finer graph keeps more of the thin branches",
-          "[reconstruct_cli]") {
-  TempDir dir;
-  const fs::path scan = small_scan(dir);
-  const fs::path coarse = dir.path / "coarse.json", fine = dir.path / "fine.json";
-  const CliResult a =
-      run_ramus({"reconstruct", scan.string(), "-o", coarse.string(), "--no-leaves"});
-  INFO(a.out);
-  REQUIRE(a.status == 0);
-  const CliResult b =
-      run_ramus({"reconstruct", scan.string(), "-o", fine.string(), "--no-leaves", "--fine"});
-  INFO(b.out);
-  REQUIRE(b.status == 0);
-  auto nodes = [](const fs::path& p) {
-    const std::string s = slurp(p);
-    std::size_t n = 0;
-    for (std::size_t at = s.find("\"parent\""); at != std::string::npos;
-         at = s.find("\"parent\"", at + 1)) {
-      ++n;
-    }
-    return n;
-  };
-  CHECK(roots_in(slurp(fine)) == 1);
-  CHECK(nodes(fine) > nodes(coarse));
-}

@@ -25,4 +25,44 @@ std::uint32_t PointIndex::nearest(const Eigen::Vector3d& q, double* d2) const {
   return idx;
 }
 
+namespace {
+
+// nanoflann's k-nearest result set with the search radius preset to a bound: the tree then
+// never descends into cells farther than the bound.
+class BoundedKnn {
+ public:
+  using DistanceType = double;
+  using IndexType = std::uint32_t;
+  BoundedKnn(std::size_t capacity, double bound2, std::uint32_t* ids, double* d2)
+      : ids_(ids), d2_(d2), capacity_(capacity), bound2_(bound2) {}
+  std::size_t size() const { return count_; }
+  bool full() const { return count_ == capacity_; }
+  double worstDist() const { return count_ == capacity_ ? d2_[capacity_ - 1] : bound2_; }
+  bool addPoint(double dist, std::uint32_t index) {
+    if (!(dist < worstDist())) return true;
+    std::size_t i = count_ < capacity_ ? count_++ : capacity_ - 1;
+    for (; i > 0 && d2_[i - 1] > dist; --i) ids_[i] = ids_[i - 1], d2_[i] = d2_[i - 1];
+    ids_[i] = index, d2_[i] = dist;
+    return true;
+  }
+
+ private:
+  std::uint32_t* ids_;
+  double* d2_;
+  std::size_t capacity_, count_ = 0;
+  double bound2_;
+};
+
+}  // namespace
+
+std::size_t PointIndex::knn_within(const Eigen::Vector3d& q, std::size_t k, double radius,
+                                   std::uint32_t* out, double* d2) const {
+  if (size() == 0 || k == 0) return 0;
+  BoundedKnn result(k, radius * radius, out, d2);
+  tree_->findNeighbors(result, q.data(), nanoflann::SearchParams());
+  const std::size_t n = result.size();
+  for (std::size_t i = 0; i < n; ++i) out[i] = original(out[i]);
+  return n;
+}
+
 }  // namespace ramus::bsg

@@ -12,27 +12,32 @@ namespace ramus::bsg {
 class PointIndex {
  public:
   // Indexes pts[ids[i]] (all of pts when ids is empty). Both must outlive the index.
-  explicit PointIndex(const std::vector<Eigen::Vector3d>& pts,
-                      std::vector<std::uint32_t> ids = {});
+  explicit PointIndex(const std::vector<Eigen::Vector3d>& pts, std::vector<std::uint32_t> ids = {});
 
   std::size_t size() const { return ids_.empty() ? pts_.size() : ids_.size(); }
   // Up to k nearest (original indices into pts) with squared distances, nearest first.
   std::size_t knn(const Eigen::Vector3d& q, std::size_t k, std::uint32_t* out, double* d2) const;
   // The nearest point's index, or kNone when the index is empty.
   std::uint32_t nearest(const Eigen::Vector3d& q, double* d2 = nullptr) const;
+  // Up to k nearest within `radius` of q, nearest first. The bound prunes the search, which
+  // keeps queries in empty space (the axis of a thick branch) cheap.
+  std::size_t knn_within(const Eigen::Vector3d& q, std::size_t k, double radius, std::uint32_t* out,
+                         double* d2) const;
 
   // nanoflann's dataset interface.
   std::size_t kdtree_get_point_count() const { return size(); }
   double kdtree_get_pt(std::size_t i, std::size_t dim) const { return at(i)[int(dim)]; }
   template <class B>
-  bool kdtree_get_bbox(B&) const { return false; }
+  bool kdtree_get_bbox(B&) const {
+    return false;
+  }
 
  private:
   const Eigen::Vector3d& at(std::size_t i) const { return ids_.empty() ? pts_[i] : pts_[ids_[i]]; }
   std::uint32_t original(std::size_t i) const { return ids_.empty() ? std::uint32_t(i) : ids_[i]; }
 
-  using Tree = nanoflann::KDTreeSingleIndexAdaptor<
-      nanoflann::L2_Simple_Adaptor<double, PointIndex>, PointIndex, 3, std::uint32_t>;
+  using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointIndex>,
+                                                   PointIndex, 3, std::uint32_t>;
   const std::vector<Eigen::Vector3d>& pts_;
   std::vector<std::uint32_t> ids_;
   std::unique_ptr<Tree> tree_;

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "compiler/infer/reconstruct.h"
+#include "compiler/infer/reconstruct/axis_projection.h"
 #include "compiler/infer/reconstruct/bases.h"
 #include "compiler/infer/reconstruct/finite_points.h"
 #include "compiler/infer/reconstruct/forest.h"
@@ -14,6 +15,7 @@
 #include "compiler/infer/reconstruct/kdtree.h"
 #include "compiler/infer/reconstruct/output.h"
 #include "compiler/infer/reconstruct/refine.h"
+#include "compiler/infer/wood/reconstruct_wood.h"
 
 namespace ramus {
 
@@ -62,11 +64,9 @@ Scale choose_scale(const std::vector<Eigen::Vector3d>& pts, const std::vector<st
   if (o.voxel_size > 0) {
     s.voxel = o.voxel_size;
   } else {
-    // A few point spacings, so that a branch's cross-section merges into a few vertices, but
-    // never finer than a fraction of the height. One spacing resolves 1-1.3 cm twigs far better
-    // (docs/reconstruction.md, Accuracy), but the contraction then no longer reaches the axis of
-    // thick branches, whose bark keeps parallel paths (the synthetic tree of the tests: length
-    // 2.6 x the truth), so it is an option, not the default.
+    // About one point spacing, so that 1-1.3 cm twigs are not merged with their neighbours
+    // (docs/reconstruction.md, Accuracy), but never finer than a fraction of the height. Thick
+    // branches are brought to one chain by the thickness-adaptive axis projection below.
     s.voxel =
         std::max(o.voxel_spacings * median_spacing(pts, ids), s.height * o.voxel_height_floor);
   }
@@ -111,6 +111,8 @@ std::vector<Bsg> refined_trees(const Graph& g, const Forest& f,
 }  // namespace
 
 ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions& o) {
+  // Foliage first (docs/wood-separation.md): the method assumes wood points.
+  if (o.leaves_in_scan != LeafHandling::kKeep) return reconstruct_without_leaves(cloud, o);
   const auto start = Clock::now();
   ReconstructResult res;
   FinitePoints finite_points = read_finite_points(cloud, res);
@@ -175,6 +177,13 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
   const double max_gap = o.max_gap > 0 ? o.max_gap : std::max(0.08 * scale.height, 3 * scale.voxel);
   res.counts.bridged_gaps = bridge_gaps(graph, roots, max_gap);
   const std::vector<Eigen::Vector3d> sample_pos = graph.pos;
+  if (o.axis_levels > 0) {
+    AxisProjectionParams ap;
+    ap.levels = o.axis_levels;
+    ap.linearity = o.axis_linearity;
+    ap.passes = o.axis_passes;
+    project_to_axes(graph, scale.voxel, ap);
+  }
   contract(graph, std::max(0, o.contraction_steps));
   res.counts.graph_vertices = graph.size();
   res.counts.graph_edges = graph.edge_count();
