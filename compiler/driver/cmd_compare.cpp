@@ -1,4 +1,4 @@
-// ramus compare A B [--seeds N] [--seed S] [--tree-index T]
+// ramus compare A B [--seeds N] [--seed S] [--tree-index T] [--reconstruct bsg|flood] [--voxel V]
 // Compares the skeletons of two sources -- grammars (.ramus, grown over N seeds), skeleton files
 // (.json) or scans (reconstructed) -- by the two-sample Kolmogorov-Smirnov distance of their
 // distributions of branch length, branching angle, azimuth, radius ratio, branch order, total
@@ -20,6 +20,7 @@ struct CompareArgs {
   int seeds = 10;
   std::uint64_t seed = 1;
   int tree_index = -1;
+  ReconstructChoice reconstruct;  // scans: as `ramus infer --method skeleton` reconstructs them
 };
 
 skeleton_infer::Distributions measure_source(const std::string& path, const CompareArgs& args,
@@ -29,6 +30,7 @@ skeleton_infer::Distributions measure_source(const std::string& path, const Comp
   so.first_seed = args.seed;
   so.tree_index = args.tree_index;
   so.quiet = global.quiet;
+  so.reconstruct = args.reconstruct;
   skeleton_infer::Distributions d;
   for (const Skeleton& s : load_skeleton_source(path, so)) {
     try {
@@ -70,6 +72,7 @@ void add_compare(CLI::App& app, const GlobalOptions& global, std::function<int()
   sub->add_option("--tree-index", args->tree_index,
                   "the tree of a scan to use (default: the one with the most length)")
       ->check(CLI::NonNegativeNumber);
+  add_reconstruct_choice_options(*sub, args->reconstruct, "--reconstruct", "scans: ");
   sub->callback(
       [args, &global, &run] { run = [args, &global] { return run_compare(*args, global); }; });
 }

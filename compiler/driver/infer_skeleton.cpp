@@ -1,5 +1,6 @@
 // ramus infer INPUT -o OUT.ramus --method skeleton [--max-rules N] [--clusters K]
 //                   [--max-order O] [--tree-index T] [--merge alpha,beta]
+//                   [--reconstruct bsg|flood] [--voxel V] [--write-skeleton S.json]
 // Skeleton -> clustered stochastic parametric L-system (docs/skeleton-inference.md). INPUT is a
 // scan (reconstructed first), a skeleton file (.json) or a grammar (.ramus, grown with --seed).
 #include <cstdio>
@@ -11,6 +12,7 @@
 #include "compiler/infer/merge/branch_merge.h"
 #include "compiler/infer/skeleton/skeleton_grammar.h"
 #include "core/atomic_file.h"
+#include "formats/skeleton_json.h"
 
 namespace ramus::cli {
 
@@ -22,7 +24,11 @@ struct SkeletonInferArgs {
   int max_order = 3;
   int tree_index = -1;
   int calibration_seeds = 4;
-  std::string merge;  // "alpha,beta" in degrees; empty: no merging
+  bool no_tropism = false;
+  bool no_axis_budget = false;
+  std::string merge;              // "alpha,beta" in degrees; empty: no merging
+  ReconstructChoice reconstruct;  // scans: --reconstruct, --voxel
+  std::string skeleton_out;       // --write-skeleton: the skeleton the grammar is inferred from
 };
 
 merge::MergeOptions parse_merge(const std::string& text) {
@@ -52,6 +58,7 @@ int run_skeleton_infer(const InferCommonArgs& common, const SkeletonInferArgs& a
   so.first_seed = common.seed;  // a grammar (.ramus) is grown once with this seed
   so.tree_index = a.tree_index;
   so.quiet = global.quiet;
+  so.reconstruct = a.reconstruct;
   Skeleton skeleton = std::move(load_skeleton_source(common.input, so).front());
   if (!a.merge.empty()) {
     const merge::MergeOptions mo = parse_merge(a.merge);
@@ -66,12 +73,21 @@ int run_skeleton_infer(const InferCommonArgs& common, const SkeletonInferArgs& a
       throw UserError(std::string("--merge: ") + e.what());
     }
   }
+  if (!a.skeleton_out.empty()) {
+    try {
+      write_skeleton_json(a.skeleton_out, skeleton);
+    } catch (const std::exception& e) {
+      throw UserError(a.skeleton_out + ": " + e.what());
+    }
+  }
   skeleton_infer::GrammarOptions go;
   go.max_rules = a.max_rules;
   go.cluster.max_clusters = a.clusters;
   go.cluster.max_order = a.max_order;
   go.cluster.seed = common.seed;
   go.calibration_seeds = a.calibration_seeds;
+  go.tropism = !a.no_tropism;
+  go.axis_budget = !a.no_axis_budget;
   go.source_name = std::filesystem::path(common.input).filename().string();
   skeleton_infer::InferredGrammar g;
   try {
@@ -89,9 +105,10 @@ int run_skeleton_infer(const InferCommonArgs& common, const SkeletonInferArgs& a
   if (!global.quiet) {
     std::printf(
         "%s: %zu productions, %zu alternatives from %zu internodes (%zu branch nodes), "
-        "derive %d, tortuosity %.3f, tip shift %.3f\n",
+        "derive %d, tortuosity %.3f, calibration shift %.3f, elasticity %.4f (%zu pairs, R^2 "
+        "%.2f)\n",
         common.output.c_str(), g.productions, g.alternatives, g.internodes, g.branch_nodes,
-        g.derive, g.tortuosity, g.tip_shift);
+        g.derive, g.tortuosity, g.tip_shift, g.tropism.elasticity, g.tropism.pairs, g.tropism.r2);
     for (const auto& grp : g.groups) {
       std::printf("  order %u%s arity %u: %zu rules -> %zu cluster(s)\n", unsigned(grp.order),
                   grp.order == a.max_order ? "+" : "", grp.arity, grp.count, grp.clusters.size());
@@ -120,8 +137,17 @@ InferRunner add_infer_skeleton_options(CLI::App& cmd, const GlobalOptions& globa
                  "skeleton: fit the tip hazards to the input's total length over N grown seeds "
                  "(default 4; 0: off)")
       ->check(CLI::Range(0, 100));
+  cmd.add_flag("--no-axis-budget", a->no_axis_budget,
+               "skeleton: end axes by a tip hazard per internode instead of a length budget per "
+               "axis");
+  cmd.add_flag("--no-tropism", a->no_tropism,
+               "skeleton: do not fit a gravitropism (every internode's turn drawn independently)");
   cmd.add_option("--merge", a->merge,
                  "skeleton: merge branches first, alpha,beta in degrees (vertical, horizontal)");
+  add_reconstruct_choice_options(cmd, a->reconstruct, "--reconstruct", "skeleton, scans: ");
+  cmd.add_option("--write-skeleton", a->skeleton_out,
+                 "skeleton: also write the skeleton the grammar is inferred from (.json; for a "
+                 "scan, its reconstruction), to compare the grammar against it");
   return [a, &global](const InferCommonArgs& common) {
     return run_skeleton_infer(common, *a, global);
   };

@@ -38,7 +38,7 @@ Skeleton reconstruct_scan(const std::string& path, const SkeletonSourceOptions& 
   ro.leaves = false;
   ReconstructResult r;
   try {
-    r = reconstruct(cloud, ro);
+    r = run_reconstruction(cloud, o.reconstruct, ro);
   } catch (const ReconstructError& e) {
     throw UserError(path + ": " + e.what());
   }
@@ -58,8 +58,9 @@ Skeleton reconstruct_scan(const std::string& path, const SkeletonSourceOptions& 
     }
   }
   if (!o.quiet) {
-    std::fprintf(stderr, "ramus: %s: tree %zu of %zu (%zu nodes) reconstructed in %.2f s\n",
-                 path.c_str(), pick, r.trees.size(), r.trees[pick].size(), r.timings.total);
+    std::fprintf(stderr, "ramus: %s: tree %zu of %zu (%zu nodes) reconstructed (%s) in %.2f s\n",
+                 path.c_str(), pick, r.trees.size(), r.trees[pick].size(),
+                 o.reconstruct.method.c_str(), r.timings.total);
   }
   return std::move(r.trees[pick]);
 }

@@ -1,11 +1,13 @@
 // Skeleton sources of `ramus infer --method skeleton` and `ramus compare`: a grammar (.ramus,
-// grown over several seeds), a skeleton file (.json) or a laser scan (reconstructed, Livny et al.).
+// grown over several seeds), a skeleton file (.json) or a laser scan (reconstructed by the BSG
+// method of Livny et al. or the voxel flood fill, reconstruct_choice.h).
 #pragma once
 
 #include <cstdint>
 #include <string>
 #include <vector>
 
+#include "compiler/driver/reconstruct_choice.h"
 #include "core/skeleton.h"
 
 namespace ramus::cli {
@@ -13,7 +15,8 @@ namespace ramus::cli {
 struct SkeletonSourceOptions {
   int seeds = 1;  // trees grown from a grammar: seeds first_seed, first_seed + 1, ...
   std::uint64_t first_seed = 1;
-  int tree_index = -1;  // scans: the tree to use; -1: the one with the most length
+  int tree_index = -1;            // scans: the tree to use; -1: the one with the most length
+  ReconstructChoice reconstruct;  // scans: how they are reconstructed
   bool quiet = false;
 };
 

@@ -83,3 +83,44 @@ TEST_CASE("compare cli: prints a KS distance per distribution", "[skeleton_infer
   r = run_ramus({"compare", "/nonexistent.json", grammar});
   CHECK(r.status == 1);
 }
+
+TEST_CASE("infer skeleton cli: reconstruction options, the written skeleton and compare",
+          "[skeleton_infer]") {
+  // The flood fill reconstructs the scan; the skeleton the grammar comes from is written too,
+  // and `compare` reconstructs the scan the same way, so it reads the same skeleton.
+  const std::string out = skeleton_test::scratch("rtwig_flood.ramus").string();
+  const std::string skel = skeleton_test::scratch("rtwig_flood.json").string();
+  auto r = run_ramus({"infer", data("rtwig_cloud.txt"), "-o", out, "--method", "skeleton",
+                      "--reconstruct", "flood", "--write-skeleton", skel});
+  INFO(r.out);
+  REQUIRE(r.status == 0);
+  CHECK(r.out.find("reconstructed (flood)") != std::string::npos);
+  CHECK(r.out.find("elasticity") != std::string::npos);
+  CHECK(run_ramus({"check", out}).status == 0);
+  const auto from_json = run_ramus({"compare", skel, out, "--seeds", "3"});
+  const auto from_scan = run_ramus(
+      {"compare", data("rtwig_cloud.txt"), out, "--seeds", "3", "--reconstruct", "flood"});
+  REQUIRE(from_json.status == 0);
+  REQUIRE(from_scan.status == 0);
+  // The same A side: identical tables (the progress line goes to stderr, merged in `out`).
+  auto table = [](const std::string& s) { return s.substr(s.find("measure")); };
+  CHECK(table(from_json.out) == table(from_scan.out));
+  // The skeleton file regrows the same grammar as the scan it came from.
+  const std::string out2 = skeleton_test::scratch("rtwig_flood_json.ramus").string();
+  REQUIRE(run_ramus({"infer", skel, "-o", out2, "--method", "skeleton"}).status == 0);
+  const std::string a = slurp(out), b = slurp(out2);
+  CHECK(a.substr(a.find('\n')) == b.substr(b.find('\n')));  // the header names the input
+  // --voxel reaches the BSG reconstruction; bad values are usage errors.
+  CHECK(run_ramus({"infer", data("rtwig_cloud.txt"), "-o", out, "--method", "skeleton", "--voxel",
+                   "0.02", "--calibrate", "1"})
+            .status == 0);
+  CHECK(run_ramus({"infer", data("rtwig_cloud.txt"), "-o", out, "--method", "skeleton",
+                   "--reconstruct", "poisson"})
+            .status != 0);
+  CHECK(run_ramus({"compare", data("rtwig_cloud.txt"), out, "--voxel", "-1"}).status != 0);
+  // --no-tropism writes no elasticity.
+  REQUIRE(run_ramus({"infer", std::string(RAMUS_SOURCE_DIR) + "/examples/trees/conifer.ramus", "-o",
+                     out, "--method", "skeleton", "--no-tropism"})
+              .status == 0);
+  CHECK(slurp(out).find("elasticity") == std::string::npos);
+}

@@ -75,7 +75,7 @@ TEST_CASE("grammar: from broadleaf, regrown trees match over several seeds", "[s
     for (const auto& x : c) INFO(measure_name(x.measure) << " KS " << x.ks);
     // Bounds measured with margin (docs/skeleton-inference.md gives the measured values).
     CHECK(ks_of(c, Measure::BranchingAngle) < 0.25);
-    CHECK(ks_of(c, Measure::BranchLength) < 0.4);
+    CHECK(ks_of(c, Measure::BranchLength) < 0.45);
     CHECK(ks_of(c, Measure::BranchOrder) < 0.3);
     CHECK(ks_of(c, Measure::Azimuth) < 0.3);
     // Radius ratios on a few exact values are drawn as two-point distributions (a fitted

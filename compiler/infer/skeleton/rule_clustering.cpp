@@ -16,6 +16,9 @@ constexpr double kRad = kPiValue / 180.0;
 constexpr int kRestarts = 3;
 constexpr int kIterations = 60;
 constexpr std::size_t kFeaturesPerChild = 5;  // theta, cos phi, sin phi, log a, log b
+// Fewer samples than this fit no length regression of their own (a cluster child with fewer
+// uses the regression pooled over its group's clusters).
+constexpr std::size_t kMinRegression = 8;
 
 double squared_distance(const double* x, const double* c, std::size_t dim) {
   double s = 0;
@@ -186,11 +189,13 @@ FittedAngle fit_angle(const std::vector<double>& deg) {
 // log a = mean + slope (log l - centre) + noise: a ratio that shrinks for long parents and grows
 // for short ones (regression towards the typical length) instead of a pure ratio, whose errors
 // would compound from internode to internode. The slope is kept in [-1, 0]: -1 is a child
-// length independent of the parent's, 0 the plain ratio of Eq. 4.11.
+// length independent of the parent's, 0 the plain ratio of Eq. 4.11. (A second regressor, the
+// parent's depth, was tried: it extrapolates badly on the few rules of a cluster and widened
+// the regrown crowns.)
 Fitted fit_log_ratio(const std::vector<double>& x, const std::vector<double>& y) {
   Fitted f = fit(y);
   const std::size_t n = y.size();
-  if (n < 3) return f;
+  if (n < kMinRegression) return f;
   double mx = 0;
   for (double v : x) mx += v;
   mx /= double(n);
@@ -237,10 +242,28 @@ void fit_atoms(Fitted& f, const std::vector<double>& v) {
   }
 }
 
+// The length-ratio regression of the continuation (role 0) or of the laterals (role 1) of
+// `members`, pooled over their clusters and lateral positions: what a cluster child with too
+// few rules for its own regression uses.
+Fitted pooled_length_ratio(const BranchRules& rules, const std::vector<std::uint32_t>& members,
+                           int role) {
+  std::vector<double> a, loglen;
+  for (std::uint32_t m : members) {
+    const NodeRule& r = rules.rules[m];
+    for (const ChildRule* c = rules.begin(r); c != rules.end(r); ++c) {
+      if ((c == rules.begin(r)) != (role == 0)) continue;
+      a.push_back(safe_log(c->a));
+      loglen.push_back(std::log(std::max(rules.internodes[m].length, 1e-9)));
+    }
+  }
+  return fit_log_ratio(loglen, a);
+}
+
 RuleCluster fit_cluster(const BranchRules& rules, const std::vector<std::uint32_t>& members,
-                        std::uint32_t arity) {
+                        std::uint32_t arity, const Fitted* pooled) {
   RuleCluster cl;
   cl.count = members.size();
+  cl.members = members;
   std::vector<double> th, ph, a, b, loglen;
   for (std::uint32_t m : members)
     loglen.push_back(std::log(std::max(rules.internodes[m].length, 1e-9)));
@@ -255,7 +278,10 @@ RuleCluster fit_cluster(const BranchRules& rules, const std::vector<std::uint32_
     }
     Fitted log_b = fit(b);
     fit_atoms(log_b, b);
-    cl.children.push_back({fit(th), fit_log_ratio(loglen, a), log_b, fit_angle(ph)});
+    Fitted log_a = fit_log_ratio(loglen, a);
+    if (members.size() < kMinRegression && pooled != nullptr && pooled[j == 0 ? 0 : 1].regression())
+      log_a = pooled[j == 0 ? 0 : 1];
+    cl.children.push_back({fit(th), log_a, log_b, fit_angle(ph)});
   }
   return cl;
 }
@@ -267,8 +293,10 @@ void fit_group(const BranchRules& rules, RuleGroup& group, const GroupData& g,
   for (std::size_t i = 0; i < g.members.size(); ++i) {
     members[labels.empty() ? 0 : labels[i]].push_back(g.members[i]);
   }
+  const Fitted pooled[2] = {pooled_length_ratio(rules, g.members, 0),
+                            pooled_length_ratio(rules, g.members, 1)};
   for (const auto& m : members) {
-    if (!m.empty()) group.clusters.push_back(fit_cluster(rules, m, group.arity));
+    if (!m.empty()) group.clusters.push_back(fit_cluster(rules, m, group.arity, pooled));
   }
   // Most frequent first, so the written grammar reads from the common case down.
   std::stable_sort(group.clusters.begin(), group.clusters.end(),

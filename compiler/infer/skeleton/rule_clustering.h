@@ -19,10 +19,11 @@ namespace ramus::skeleton_infer {
 
 // A fitted one-dimensional distribution: normal(mean, sd), clamped to [min, max] when drawn.
 // For the length ratio the mean may depend on the parent's log-length x:
-// mean + slope (x - centre), with sd the residual spread (see fit_cluster in the .cpp).
+// mean + slope (x - centre), with sd the residual spread (see fit_log_ratio in the .cpp).
 struct Fitted {
   double mean = 0, sd = 0, min = 0, max = 0;
   double slope = 0, centre = 0;
+  bool regression() const { return slope != 0; }
   // Values on at most two exact points: at least kAtomShare of them equal (to 1e-6) atom0 or
   // atom1, as the ratios of a grammar-grown tree do (0.7, 0.85). Drawn as atom0, or atom1 with
   // probability atom_p (0: always atom0), since a normal fitted to them cannot match them.
@@ -47,6 +48,7 @@ struct ChildDistribution {
 
 struct RuleCluster {
   std::size_t count = 0;                    // rules in the cluster
+  std::vector<std::uint32_t> members;       // their internodes (BranchRules indices)
   std::vector<ChildDistribution> children;  // continuation first, then laterals (arity of group)
 };
 

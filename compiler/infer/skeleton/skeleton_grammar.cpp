@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 #include <map>
+#include <optional>
 
 #include "compiler/derive.h"
 #include "compiler/grow.h"
@@ -27,7 +28,7 @@ constexpr double kTiny = 1e-9;
 struct OrderStats {
   std::size_t internodes = 0, tips = 0;
   std::uint32_t max_axis_index = 0;  // the last internode of every axis is a tip
-  std::vector<TipSample> hazard;     // depth, log width and tip of every internode
+  std::vector<TipSample> hazard;     // depth, log width, log length and tip of every internode
 };
 
 // `clamp(normal(m, s), lo, hi)`, or the mean alone when the spread is nil.
@@ -40,7 +41,7 @@ std::string draw(const Fitted& f) {
 // A log-normal ratio: exp of the clamped normal of the logarithms, or the constant ratio. A
 // length ratio with a slope has its mean depend on the parent's log-length (regression).
 std::string draw_ratio(const Fitted& f, const char* parent) {
-  if (f.slope != 0) {
+  if (f.regression()) {
     const std::string mean = grammar_number(f.mean - f.slope * f.centre) + " + " +
                              grammar_number(f.slope) + " * log(max(" + parent + ", 1e-9))";
     return "exp(clamp(normal(" + mean + ", " + grammar_number(std::max(f.sd, 1e-6)) + "), " +
@@ -92,19 +93,48 @@ std::string segment(double kink_degrees, const std::string& len, bool random_rol
          grammar_number(2 * kink_degrees) + ")F(" + len + " * 0.5)&(" + k + ")";
 }
 
-std::string child(const ChildDistribution& d, const LengthRange& range, const char* rest) {
+std::string child(const ChildDistribution& d, const LengthRange& range, const std::string& rest) {
   return turn(d) + "N(clamp(l * " + draw_ratio(d.log_a, "l") + ", " + grammar_number(range.min) +
          ", " + grammar_number(range.max) + "), w * " + draw_ratio(d.log_b, "w") + ", " + rest +
          ")";
 }
 
-std::string alternative(const RuleCluster& c, const LengthRange& range, double kink) {
+// `lateral_budget`: the axis budget drawn for a lateral child, empty without axis budgets (the
+// module then has no parameter r); the continuation gets what is left of r after this internode.
+std::string alternative(const RuleCluster& c, const LengthRange& range, double kink,
+                        const std::string& lateral_budget) {
+  const bool budget = !lateral_budget.empty();
   std::string s = "!(w)" + segment(kink, "l");
   for (std::size_t j = 1; j < c.children.size(); ++j) {
-    s += "[" + child(c.children[j], range, "o + 1, 0, d + 1") + "]";
+    s += "[" +
+         child(c.children[j], range,
+               "o + 1, 0, d + 1" + (budget ? ", " + lateral_budget : std::string())) +
+         "]";
   }
-  if (!c.children.empty()) s += child(c.children[0], range, "o, i + 1, d + 1");
+  if (!c.children.empty())
+    s += child(c.children[0], range, budget ? "o, i + 1, d + 1, r - l" : "o, i + 1, d + 1");
   return s;
+}
+
+// The draw of a lateral axis's length budget (AxisBudget), its log moved by `shift`.
+std::string budget_draw(const AxisBudget& b, double shift) {
+  std::string mean = grammar_number(b.c0 + shift);
+  if (b.cl != 0) mean += " + " + grammar_number(b.cl) + " * log(max(l, 1e-9))";
+  if (b.cw != 0) mean += " + " + grammar_number(b.cw) + " * log(max(w, 1e-9))";
+  if (b.cd != 0) mean += " + " + grammar_number(b.cd) + " * d";
+  const std::string lo = grammar_number(b.lo + shift), hi = grammar_number(b.hi + shift);
+  if (b.sd < 1e-6) return "exp(clamp(" + mean + ", " + lo + ", " + hi + "))";
+  return "exp(clamp(normal(" + mean + ", " + grammar_number(b.sd) + "), " + lo + ", " + hi + "))";
+}
+
+// An internode of length l continues its axis while the budget r (which counts the internode
+// itself) leaves more than half of a next internode of l times `next`: r > l (1 + next / 2), so
+// that the axis ends where the budget is spent to within half an internode. `next` is the lower
+// quartile of the order's continuation ratios, not the median: an order whose axes end in a
+// long shoot (a weeping tree's whip, 6 times its parent) has ratios far above 1 in many of its
+// continuations, and a threshold set by them would end its ordinary axes early.
+std::string continue_guard(double next) {
+  return " && r > " + grammar_number(1 + next / 2) + " * l";
 }
 
 // Observed frequencies as decimals with six places that sum to exactly 1 (largest remainder),
@@ -170,6 +200,10 @@ void fit_budget(const BranchRules& rules, std::vector<RuleGroup>& groups,
     groups.erase(rarest);
   }
 }
+
+// With axis budgets the calibration's shift s (more tips as it grows) moves every log budget by
+// -s / kBudgetShiftScale: at most a factor e^3 either way.
+constexpr double kBudgetShiftScale = 10;
 
 // A calibration growth with more modules than this is taken as far too long.
 constexpr std::uint64_t kMaxCalibrationModules = 20'000'000;
@@ -240,12 +274,14 @@ TipHazard fit_tip_hazard(const std::vector<TipSample>& samples) {
   // all at the last step). The features are centred and scaled to unit spread for the fit (the
   // ridge then weighs them alike) and the coefficients mapped back.
   constexpr double kRidge = 1e-3;
-  constexpr std::size_t kDim = 3;
+  constexpr std::size_t kDim = 4;
   TipHazard h;
   const std::size_t n = samples.size();
   if (n == 0) return h;
-  std::array<double, kDim> centre{}, scale{1, 1, 1};
-  auto raw = [](const TipSample& s) { return std::array<double, kDim>{1, s.depth, s.log_width}; };
+  std::array<double, kDim> centre{}, scale{1, 1, 1, 1};
+  auto raw = [](const TipSample& s) {
+    return std::array<double, kDim>{1, s.depth, s.log_width, s.log_length};
+  };
   for (const TipSample& s : samples) {
     const auto x = raw(s);
     for (std::size_t j = 1; j < kDim; ++j) centre[j] += x[j] / double(n);
@@ -265,7 +301,7 @@ TipHazard fit_tip_hazard(const std::vector<TipSample>& samples) {
     tips += samples[k].tip;
   }
   const double mean = std::clamp(tips / double(n), 1e-6, 1 - 1e-6);
-  std::array<double, kDim> c{std::log(mean / (1 - mean)), 0, 0};
+  std::array<double, kDim> c{std::log(mean / (1 - mean)), 0, 0, 0};
   for (int it = 0; it < 200; ++it) {
     std::array<double, kDim> g{};
     std::array<std::array<double, kDim + 1>, kDim> m{};  // Hessian | gradient
@@ -309,7 +345,8 @@ TipHazard fit_tip_hazard(const std::vector<TipSample>& samples) {
   }
   h.beta = scale[1] > 0 ? c[1] / scale[1] : 0;
   h.gamma = scale[2] > 0 ? c[2] / scale[2] : 0;
-  h.alpha = c[0] - h.beta * centre[1] - h.gamma * centre[2];
+  h.delta = scale[3] > 0 ? c[3] / scale[3] : 0;
+  h.alpha = c[0] - h.beta * centre[1] - h.gamma * centre[2] - h.delta * centre[3];
   for (std::size_t k = 0; k < n; ++k) {
     double z = 0;
     for (std::size_t j = 0; j < kDim; ++j) z += c[j] * x[k][j];
@@ -317,6 +354,80 @@ TipHazard fit_tip_hazard(const std::vector<TipSample>& samples) {
     h.log_likelihood += samples[k].tip > 0.5 ? std::log(p) : std::log(1 - p);
   }
   return h;
+}
+
+AxisBudget fit_axis_budget(const std::vector<BudgetSample>& samples) {
+  // Least squares on the centred features for every subset of {log l, log w, d}; the subset of
+  // largest BIC, -n ln(RSS / n) - p ln n with p = the terms, the intercept and the spread.
+  AxisBudget best;
+  const std::size_t n = samples.size();
+  best.samples = n;
+  if (n == 0) return best;
+  constexpr std::size_t kDim = 3;
+  auto raw = [](const BudgetSample& s) {
+    return std::array<double, kDim>{s.log_length, s.log_width, s.depth};
+  };
+  std::array<double, kDim> centre{};
+  double ymean = 0;
+  best.lo = best.hi = samples[0].log_axis;
+  for (const BudgetSample& s : samples) {
+    for (std::size_t j = 0; j < kDim; ++j) centre[j] += raw(s)[j] / double(n);
+    ymean += s.log_axis / double(n);
+    best.lo = std::min(best.lo, s.log_axis);
+    best.hi = std::max(best.hi, s.log_axis);
+  }
+  double best_score = -std::numeric_limits<double>::infinity();
+  for (unsigned mask = 0; mask < (1u << kDim); ++mask) {
+    std::array<std::size_t, kDim> used{};
+    std::size_t k = 0;
+    for (std::size_t j = 0; j < kDim; ++j)
+      if (mask & (1u << j)) used[k++] = j;
+    if (n < k + 3) continue;  // too few axes to fit these terms and judge them
+    // Normal equations (X^T X + ridge) c = X^T y on centred features, Gauss-Jordan.
+    std::array<std::array<double, kDim + 1>, kDim> m{};  // rows 0..k-1, column k: X^T y
+    for (const BudgetSample& s : samples) {
+      const auto x = raw(s);
+      for (std::size_t a = 0; a < k; ++a) {
+        for (std::size_t b = 0; b < k; ++b)
+          m[a][b] += (x[used[a]] - centre[used[a]]) * (x[used[b]] - centre[used[b]]);
+        m[a][k] += (x[used[a]] - centre[used[a]]) * (s.log_axis - ymean);
+      }
+    }
+    bool ok = true;
+    for (std::size_t a = 0; a < k; ++a) m[a][a] += 1e-9 * (1 + m[a][a]);
+    for (std::size_t col = 0; col < k && ok; ++col) {
+      std::size_t piv = col;
+      for (std::size_t r = col + 1; r < k; ++r)
+        if (std::abs(m[r][col]) > std::abs(m[piv][col])) piv = r;
+      std::swap(m[col], m[piv]);
+      if (!(std::abs(m[col][col]) > 1e-12)) ok = false;
+      for (std::size_t r = 0; r < k && ok; ++r) {
+        if (r == col) continue;
+        const double f = m[r][col] / m[col][col];
+        for (std::size_t j = col; j <= k; ++j) m[r][j] -= f * m[col][j];
+      }
+    }
+    if (!ok) continue;  // a constant feature: the subset without it is tried too
+    std::array<double, kDim> c{};
+    for (std::size_t a = 0; a < k; ++a) c[used[a]] = m[a][k] / m[a][a];
+    double rss = 0;
+    for (const BudgetSample& s : samples) {
+      const auto x = raw(s);
+      double e = s.log_axis - ymean;
+      for (std::size_t j = 0; j < kDim; ++j) e -= c[j] * (x[j] - centre[j]);
+      rss += e * e;
+    }
+    const double score = -double(n) * std::log(std::max(rss / double(n), 1e-12)) -
+                         double(k + 2) * std::log(double(n));
+    if (score > best_score) {
+      best_score = score;
+      best.cl = c[0], best.cw = c[1], best.cd = c[2];
+      best.c0 = ymean - c[0] * centre[0] - c[1] * centre[1] - c[2] * centre[2];
+      best.sd = std::sqrt(rss / double(std::max<std::size_t>(n - k - 1, 1)));
+    }
+  }
+  if (best_score == -std::numeric_limits<double>::infinity()) best.c0 = ymean;  // n < 3
+  return best;
 }
 
 std::string grammar_number(double v) {
@@ -339,11 +450,36 @@ InferredGrammar infer_grammar(const Skeleton& skeleton, const GrammarOptions& op
   return infer_grammar(extract_branch_rules(skeleton), options);
 }
 
-InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& options) {
-  if (rules.internodes.empty()) {
+InferredGrammar infer_grammar(const BranchRules& extracted, const GrammarOptions& options) {
+  if (extracted.internodes.empty()) {
     throw InferError("the skeleton has no segment (a single node or none): nothing to infer");
   }
   InferredGrammar out;
+  // Tortuosity of the internodes, length-weighted: the kink angle of `segment`.
+  double chords = 0, paths = 0;
+  for (const Internode& in : extracted.internodes) chords += in.chord, paths += in.length;
+  const double tortuosity = paths > 0 ? std::clamp(chords / paths, 0.0, 1.0) : 1.0;
+  const double kink = std::acos(tortuosity) * 57.29577951308232;  // degrees
+  out.tortuosity = tortuosity;
+  // Tropism (ABOP 2.2, tropism_fit.h): the turtle bends after every F, so per internode once
+  // when it is drawn straight and twice when kinked; the rules' angles are measured from the
+  // bent heading. A fit on fewer than kMinTropismPairs pairs, or one that explains almost none
+  // of the variance, is not written.
+  constexpr std::size_t kMinTropismPairs = 10;
+  constexpr double kMinTropismR2 = 0.02;
+  const int bends = kink < kMinKink ? 1 : 2;
+  std::optional<BranchRules> bent;
+  if (options.tropism) {
+    out.tropism = fit_elasticity(extracted, bends, &out.tropism_by_order);
+    if (out.tropism.pairs < kMinTropismPairs || out.tropism.r2 < kMinTropismR2 ||
+        std::abs(out.tropism.elasticity) < 1e-4) {
+      out.tropism.elasticity = 0;
+    } else {
+      bent = extracted;
+      measure_from_bent_heading(*bent, out.tropism.elasticity, bends);
+    }
+  }
+  const BranchRules& rules = bent ? *bent : extracted;
   out.internodes = rules.internodes.size();
   for (const NodeRule& r : rules.rules) out.branch_nodes += r.child_count >= 2 ? 1 : 0;
 
@@ -356,8 +492,8 @@ InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& op
     ++s.internodes;
     const bool tip = rules.rules[&in - rules.internodes.data()].child_count == 0;
     s.tips += tip ? 1 : 0;
-    s.hazard.push_back(
-        {double(in.depth), std::log(std::max(2 * in.radius, kTiny)), tip ? 1.0 : 0.0});
+    s.hazard.push_back({double(in.depth), std::log(std::max(2 * in.radius, kTiny)), tip ? 1.0 : 0.0,
+                        std::log(std::max(in.length, kTiny))});
     s.max_axis_index = std::max(s.max_axis_index, in.axis_index);
     deepest_order = std::max(deepest_order, in.order);
     deepest = std::max(deepest, in.depth);
@@ -367,12 +503,6 @@ InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& op
     lengths.min = std::min(lengths.min, in.length);
     lengths.max = std::max(lengths.max, in.length);
   }
-  // Tortuosity of the internodes, length-weighted: the kink angle of `segment`.
-  double chords = 0, paths = 0;
-  for (const Internode& in : rules.internodes) chords += in.chord, paths += in.length;
-  const double tortuosity = paths > 0 ? std::clamp(chords / paths, 0.0, 1.0) : 1.0;
-  const double kink = std::acos(tortuosity) * 57.29577951308232;  // degrees
-  out.tortuosity = tortuosity;
   out.derive = int(deepest);  // the axiom draws depth 0; step k expands depth k
   out.groups = cluster_rules(rules, options.cluster);
   fit_budget(rules, out.groups, options);
@@ -407,22 +537,113 @@ InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& op
   double theta0 = 0, phi0 = 0;
   angle_and_azimuth(Vec3{0, 0, 1}, t0.direction, theta0, phi0);
 
-  // Termination per order group: the logistic hazard of depth, and of log width too when that
-  // model is better by the Bayesian information criterion (a tree grown with a width threshold
-  // has its tips where w falls; on a scan the radii are often too noisy to tell).
+  // Termination per order group: the logistic hazard of depth, and of log width and log length
+  // too when that model is better by the Bayesian information criterion (a tree grown with a
+  // width threshold has its tips where w falls, one whose axes end in a long shoot where l
+  // jumps; on a scan the radii are often too noisy to tell).
   std::map<std::uint16_t, TipHazard> hazards;
   for (const auto& [order, st] : stats) {
-    std::vector<TipSample> depth_only = st.hazard;
-    for (TipSample& t : depth_only) t.log_width = 0;
-    const TipHazard by_depth = fit_tip_hazard(depth_only);
-    const TipHazard by_width = fit_tip_hazard(st.hazard);
+    // Depth always; width and length each when the BIC (2 ln L - p ln n) prefers them.
     const double ln_n = std::log(double(std::max<std::size_t>(st.hazard.size(), 1)));
-    hazards[order] = 2 * by_width.log_likelihood - 3 * ln_n > 2 * by_depth.log_likelihood - 2 * ln_n
-                         ? by_width
-                         : by_depth;
+    double best_score = -std::numeric_limits<double>::infinity();
+    for (int model = 0; model < 4; ++model) {
+      std::vector<TipSample> samples = st.hazard;
+      for (TipSample& t : samples) {
+        if ((model & 1) == 0) t.log_width = 0;
+        if ((model & 2) == 0) t.log_length = 0;
+      }
+      const TipHazard h = fit_tip_hazard(samples);
+      const double params = 2 + (model & 1) + ((model & 2) >> 1);
+      const double score = 2 * h.log_likelihood - params * ln_n;
+      if (score > best_score) best_score = score, hazards[order] = h;
+    }
   }
 
-  // The grammar with every tip hazard's intercept moved by `shift` (see calibration below).
+  // Axis budgets: `remaining[i]` is the length of internode i and of all that continue its axis.
+  // A lateral's sample pairs its axis length with the internode carrying it; groups by the
+  // lateral's order, a group with fewer than kMinBudgetAxes axes uses the fit over all laterals.
+  constexpr std::size_t kMinBudgetAxes = 8;
+  const std::size_t n_in = rules.internodes.size();
+  std::vector<double> remaining(n_in, 0.0);
+  std::map<std::uint16_t, AxisBudget> budgets;
+  std::map<const RuleCluster*, AxisBudget> cluster_budgets;
+  std::map<std::uint16_t, double> next_ratio;  // lower quartile continuation ratio per order
+  AxisBudget pooled_budget;
+  if (options.axis_budget) {
+    std::vector<std::uint32_t> next(n_in, kNone);
+    for (std::uint32_t i = 0; i < n_in; ++i) {
+      const Internode& in = rules.internodes[i];
+      if (in.continuation && in.parent != kNone) next[in.parent] = i;
+    }
+    std::vector<std::uint32_t> chain;
+    for (std::uint32_t i = 0; i < n_in; ++i) {
+      const Internode& in = rules.internodes[i];
+      if (in.continuation && in.parent != kNone) continue;  // not an axis start
+      chain.clear();
+      for (std::uint32_t j = i; j != kNone && chain.size() <= n_in; j = next[j]) chain.push_back(j);
+      double sum = 0;
+      for (auto j = chain.rbegin(); j != chain.rend(); ++j)
+        remaining[*j] = (sum += rules.internodes[*j].length);
+    }
+    std::map<std::uint16_t, std::vector<BudgetSample>> samples;
+    std::vector<BudgetSample> all;
+    for (std::uint32_t i = 0; i < n_in; ++i) {
+      const Internode& in = rules.internodes[i];
+      if (in.continuation || in.parent == kNone) continue;
+      const Internode& p = rules.internodes[in.parent];
+      const BudgetSample b{std::log(std::max(p.length, kTiny)),
+                           std::log(std::max(2 * p.radius, kTiny)), double(p.depth),
+                           std::log(std::max(remaining[i], kTiny))};
+      samples[std::uint16_t(std::min<int>(in.order, max_order))].push_back(b);
+      all.push_back(b);
+    }
+    pooled_budget = fit_axis_budget(all);
+    std::map<std::uint16_t, std::vector<double>> ratios;
+    for (const Internode& in : rules.internodes) {
+      if (!in.continuation || in.parent == kNone) continue;
+      const double lp = rules.internodes[in.parent].length;
+      if (!(lp > kTiny) || !(in.length > kTiny)) continue;
+      ratios[std::uint16_t(std::min<int>(in.order, max_order))].push_back(in.length / lp);
+    }
+    for (auto& [order, v] : ratios) {
+      std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 4), v.end());
+      next_ratio[order] = v[v.size() / 4];
+    }
+    for (const auto& [order, v] : samples)
+      budgets[order] = v.size() >= kMinBudgetAxes ? fit_axis_budget(v) : pooled_budget;
+    // Per cluster: the laterals of its rules, when there are enough of them.
+    for (const RuleGroup& g : out.groups) {
+      for (const RuleCluster& c : g.clusters) {
+        std::vector<BudgetSample> v;
+        for (std::uint32_t m : c.members) {
+          const NodeRule& rule = rules.rules[m];
+          const Internode& p = rules.internodes[m];
+          for (const ChildRule* ch = rules.begin(rule); ch != rules.end(rule); ++ch) {
+            const Internode& in = rules.internodes[ch->internode];
+            if (in.continuation) continue;
+            v.push_back({std::log(std::max(p.length, kTiny)),
+                         std::log(std::max(2 * p.radius, kTiny)), double(p.depth),
+                         std::log(std::max(remaining[ch->internode], kTiny))});
+          }
+        }
+        if (v.size() >= kMinBudgetAxes) cluster_budgets[&c] = fit_axis_budget(v);
+      }
+    }
+  }
+  auto lateral_budget = [&](const RuleCluster& c, std::uint16_t parent_order, double shift) {
+    if (!options.axis_budget) return std::string();
+    // The calibration moves only the budgets of the finest laterals (the deepest order group):
+    // they add length but little reach, while the reach of the coarser axes is the input's.
+    if (std::min<int>(parent_order + 1, max_order) < std::min<int>(deepest_order, max_order))
+      shift = 0;
+    if (const auto own = cluster_budgets.find(&c); own != cluster_budgets.end())
+      return budget_draw(own->second, shift);
+    const auto it = budgets.find(std::uint16_t(std::min<int>(parent_order + 1, max_order)));
+    return budget_draw(it != budgets.end() ? it->second : pooled_budget, shift);
+  };
+
+  // The grammar with every tip hazard's intercept, or every log axis budget, moved by `shift`
+  // (see calibration below).
   auto write = [&](double shift) {
     std::string text;
     text += "// Inferred by `ramus infer --method skeleton`";
@@ -430,11 +651,31 @@ InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& op
     text += ": " + std::to_string(out.internodes) + " internodes, " +
             std::to_string(out.branch_nodes) + " branch nodes.\n";
     text +=
-        "// N(l, w, o, i, d): an internode of length l and width w, branch order o, position i on "
-        "its axis, depth d.\n";
+        "// N(l, w, o, i, d" + std::string(options.axis_budget ? ", r" : "") +
+        "): an internode of length l and width w, branch order o, position i on its axis, depth "
+        "d" +
+        std::string(options.axis_budget ? ", r the length left to its axis (itself included)"
+                                        : "") +
+        ".\n";
     text += "lsystem " + options.system_name + " {\n";
     text += "  derive " + std::to_string(out.derive) + ";\n";
     text += "  seed " + std::to_string(options.cluster.seed) + ";\n";
+    if (out.tropism.elasticity != 0) {
+      // ABOP 2.2: e > 0 bends towards the ground, e < 0 away from it (written as a tropism
+      // towards the sky with |e|: the same turn, since |H x T| is the same).
+      const double e = out.tropism.elasticity;
+      std::string fits;
+      for (std::size_t o = 0; o < out.tropism_by_order.size(); ++o) {
+        if (out.tropism_by_order[o].pairs < 3) continue;
+        fits += (fits.empty() ? "" : ", ") + std::string("order ") + std::to_string(o) + " " +
+                grammar_number(out.tropism_by_order[o].elasticity);
+      }
+      text += "  // gravitropism fitted on " + std::to_string(out.tropism.pairs) +
+              " continuations (R^2 " + grammar_number(out.tropism.r2) + "; per order: " + fits +
+              ")\n";
+      text += std::string("  tropism 0, 0, ") + (e > 0 ? "-1" : "1") + ";\n";
+      text += "  elasticity " + grammar_number(std::abs(e)) + ";\n";
+    }
     // The first internode and its children as observed (absolute lengths and widths): the trunk's
     // base is often far longer than any later internode, and no ratio describes that jump.
     std::string axiom = "/(" + grammar_number(phi0) + ")&(" + grammar_number(theta0) + ")!(" +
@@ -444,10 +685,12 @@ InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& op
     std::string continuation;
     for (const ChildRule* c = rules.begin(root_rule); c != rules.end(root_rule); ++c) {
       const Internode& ci = rules.internodes[c->internode];
-      const std::string call = "$/(" + grammar_number(c->phi) + ")&(" + grammar_number(c->theta) +
-                               ")N(" + grammar_number(ci.length) + ", " +
-                               grammar_number(2 * ci.radius) + ", " + std::to_string(ci.order) +
-                               ", " + std::to_string(ci.axis_index) + ", 1)";
+      const std::string call =
+          "$/(" + grammar_number(c->phi) + ")&(" + grammar_number(c->theta) + ")N(" +
+          grammar_number(ci.length) + ", " + grammar_number(2 * ci.radius) + ", " +
+          std::to_string(ci.order) + ", " + std::to_string(ci.axis_index) + ", 1" +
+          (options.axis_budget ? ", " + grammar_number(remaining[c->internode]) : std::string()) +
+          ")";
       if (ci.continuation) {
         continuation = call;
       } else {
@@ -474,10 +717,13 @@ InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& op
         guard = "o >= " + std::to_string(order) + " && o <= " + std::to_string(deepest_order);
       }
       guard += " && i < " + std::to_string(st.max_axis_index);
+      if (options.axis_budget)
+        guard += continue_guard(next_ratio.count(order) != 0 ? next_ratio.at(order) : 1.0);
       text += "  // order " + std::to_string(order) + (order == max_order ? " and above" : "") +
               ": " + std::to_string(st.internodes) + " internodes, longest axis " +
               std::to_string(st.max_axis_index + 1) + "\n";
-      text += "  N(l, w, o, i, d) : " + guard + " ->";
+      const std::string params = options.axis_budget ? "l, w, o, i, d, r" : "l, w, o, i, d";
+      text += "  N(" + params + ") : " + guard + " ->";
       // Tips by the logistic hazard of depth, log width and log length; branching alternatives
       // share the rest by their observed frequencies among the branch nodes of the order.
       std::vector<std::size_t> counts;
@@ -493,7 +739,9 @@ InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& op
       const TipHazard& h = hazards.at(order);
       std::string z = grammar_number(h.alpha + shift) + " + " + grammar_number(h.beta) + " * d";
       if (h.gamma != 0) z += " + " + grammar_number(h.gamma) + " * log(max(w, 1e-9))";
+      if (h.delta != 0) z += " + " + grammar_number(h.delta) + " * log(max(l, 1e-9))";
       bool first = true;
+      if (options.axis_budget) tip_group = nullptr;  // the budget ends the axes
       if (tip_group != nullptr) {
         text += " (1 / (1 + exp(clamp(-(" + z + "), -30, 30)))) !(w)" + segment(kink, "l");
         first = false;
@@ -511,15 +759,20 @@ InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& op
             text += "(" + q + ") ";
           }
           first = false;
-          text += alternative(c, lengths, kink);
+          text +=
+              alternative(c, lengths, kink, lateral_budget(c, order, -shift / kBudgetShiftScale));
           ++out.alternatives;
         }
       }
       text += ";\n";
       ++out.productions;
     }
-    text += "  // tips: axes past their longest observed length, orders past the deepest\n";
-    text += "  N(l, w, o, i, d) -> !(w)" + segment(kink, "l") + ";\n";
+    text += options.axis_budget ? "  // tips: axes whose budget is spent or past their longest "
+                                  "observed length, orders past the deepest\n"
+                                : "  // tips: axes past their longest observed length, orders "
+                                  "past the deepest\n";
+    text += std::string("  N(") + (options.axis_budget ? "l, w, o, i, d, r" : "l, w, o, i, d") +
+            ") -> !(w)" + segment(kink, "l") + ";\n";
     text += "}\n";
     return text;
   };
@@ -527,8 +780,9 @@ InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& op
   std::string text = write(0);
   if (options.calibration_seeds > 0) {
     const double target = rules.tree_length[tree];
-    out.tip_shift = calibrate_tip_shift(write, target, options);
-    text = write(out.tip_shift);
+    const double shift = calibrate_tip_shift(write, target, options);
+    text = write(shift);
+    out.tip_shift = options.axis_budget ? -shift / kBudgetShiftScale : shift;
   }
 
   // Canonical layout: what `ramus fmt` would write.

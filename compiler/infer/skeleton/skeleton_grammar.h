@@ -1,18 +1,22 @@
 // Skeleton -> a small stochastic parametric L-system in the ramus language.
 //
 // Extraction (branch_rules.h, Eq. 4.11 of the thesis draft) gives one rule per internode; the
-// clusters of rule_clustering.h generalize them. The grammar has one module N(l, w, o, i, d): an
-// internode of length l and width w (twice the radius), branch order o, position i along its
-// axis and depth d (internodes from the root). Per order group there is one stochastic
-// production whose alternatives are the tip (the axis ends) and one branching alternative per
-// cluster. Tips have the probability of a logistic function of depth (and of the log width,
-// when the BIC prefers it) fitted to the order's internodes, its intercept optionally calibrated
-// so that grown trees have the input's total length; the branching alternatives share the rest
-// by their observed frequencies. Tortuous internodes are drawn as two kinked halves. Every
-// angle and (log-)ratio is drawn from its cluster's fitted normal distribution, clamped to the
-// observed range. Growth also stops at the longest observed axis of an order, past the deepest
-// observed order, and after `derive` = the deepest observed internode. See
-// docs/skeleton-inference.md.
+// clusters of rule_clustering.h generalize them. The grammar has one module N(l, w, o, i, d, r):
+// an internode of length l and width w (twice the radius), branch order o, position i along its
+// axis, depth d (internodes from the root) and r the length left to its axis. Per order group
+// there is one stochastic production with one branching alternative per cluster, by their
+// observed frequencies; it applies while the axis budget r holds more than this internode and
+// half of the next (AxisBudget below: every lateral draws its axis's length where it starts),
+// and the fallback tip ends the axis. The finest laterals' budgets are optionally calibrated so
+// that grown trees have the input's total length. Without axis budgets (the module has no r),
+// each production has a tip alternative instead, of the probability of a logistic function of
+// depth (and of the log width and log length, when the BIC prefers them) fitted to the order's
+// internodes, its intercept calibrated. Tortuous internodes are drawn as
+// two kinked halves; a fitted gravitropism (tropism_fit.h) is written as `tropism` and
+// `elasticity`. Every angle and (log-)ratio is drawn from its cluster's fitted normal
+// distribution, clamped to the observed range. Growth also stops at the longest observed axis
+// of an order, past the deepest observed order, and after `derive` = the deepest observed
+// internode. See docs/skeleton-inference.md.
 #pragma once
 
 #include <cstdint>
@@ -22,6 +26,7 @@
 
 #include "compiler/infer/skeleton/branch_rules.h"
 #include "compiler/infer/skeleton/rule_clustering.h"
+#include "compiler/infer/skeleton/tropism_fit.h"
 #include "core/skeleton.h"
 
 namespace ramus::skeleton_infer {
@@ -34,6 +39,12 @@ struct GrammarOptions {
   // Calibrate the tip hazards against the input's total length over this many grown seeds
   // (0: no calibration). See calibrate_tip_shift in the .cpp.
   int calibration_seeds = 0;
+  // Fit the elasticity of a gravitropism (tropism_fit.h) and write it into the grammar; the
+  // rules' angles are then measured from the bent heading.
+  bool tropism = true;
+  // End every axis when its length budget is spent (AxisBudget below) instead of by the tip
+  // hazard of every internode.
+  bool axis_budget = true;
 };
 
 struct InferredGrammar {
@@ -44,8 +55,14 @@ struct InferredGrammar {
   std::size_t internodes = 0;
   std::size_t branch_nodes = 0;
   int derive = 0;
-  double tip_shift = 0;   // added to every tip hazard's intercept by the calibration
+  // Found by the calibration: added to every tip hazard's intercept, or with axis budgets to
+  // every lateral axis's log budget.
+  double tip_shift = 0;
   double tortuosity = 1;  // chord / path length of the internodes (length-weighted)
+  // The fitted tropism: `elasticity` (radians per F, > 0 towards the ground) pooled over the
+  // orders, as written; the fit of each order, for the header comment and the CLI's report.
+  ElasticityFit tropism;
+  std::vector<ElasticityFit> tropism_by_order;
 };
 
 // Thrown when there is nothing to infer from (no segment at all).
@@ -60,23 +77,45 @@ InferredGrammar infer_grammar(const Skeleton& skeleton, const GrammarOptions& op
 // The same from rules already extracted.
 InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& options);
 
-// The probability that an internode is a tip, a logistic function of its depth d and the log of
-// its width w:
-//   p = 1 / (1 + exp(-(alpha + beta d + gamma log w))),
+// The probability that an internode is a tip, a logistic function of its depth d, the log of
+// its width w and the log of its length l:
+//   p = 1 / (1 + exp(-(alpha + beta d + gamma log w + delta log l))),
 // fitted by (slightly ridge-penalized) maximum likelihood. Termination in the grammar: a tree
 // grown by a width threshold (`A(l, w) : w > min -> ...`) has its tips where w falls, which depth
-// alone only approximates.
+// alone only approximates; a tree whose axes end in a long shoot (a conifer's twig, a weeping
+// tree's whip) has its tips where l jumps. A feature that is constant over the samples (0 when
+// not wanted) is left out.
 struct TipHazard {
-  double alpha = 0, beta = 0, gamma = 0;
+  double alpha = 0, beta = 0, gamma = 0, delta = 0;
   double log_likelihood = 0;  // of the fitted samples (for model selection)
 };
 struct TipSample {
   double depth = 0, log_width = 0;
-  double tip = 0;  // 1 for a tip, else 0
+  double tip = 0;         // 1 for a tip, else 0
+  double log_length = 0;  // last, so that {depth, log width, tip} still initializes a sample
 };
 TipHazard fit_tip_hazard(const std::vector<TipSample>& samples);
 // Depth alone (gamma = 0).
 TipHazard fit_tip_hazard(const std::vector<double>& depth, const std::vector<double>& is_tip);
+
+// The length of a lateral axis (its first internode and all that continue it), log-normal with
+// a mean linear in the carrying internode's log length, log width and depth:
+//   log L = c0 + cl log l + cw log w + cd d + normal(0, sd), clamped to [lo, hi],
+// fitted by least squares, the terms chosen by the BIC. The grammar draws it where the lateral
+// starts and passes the rest down the axis; an internode continues its axis only while more
+// than half an internode of the budget is left after it. A per-internode tip decision cannot
+// tell an axis that jumps to a long shoot and then stops from one that keeps branching out
+// there, and the regrown crowns were 1.4 to 2.6 times as wide as the input; the budget ties the
+// reach of every axis to what the input's axes of its kind reach.
+struct AxisBudget {
+  double c0 = 0, cl = 0, cw = 0, cd = 0, sd = 0, lo = 0, hi = 0;
+  std::size_t samples = 0;
+};
+struct BudgetSample {
+  double log_length = 0, log_width = 0, depth = 0;  // of the internode carrying the lateral
+  double log_axis = 0;                              // log of the lateral axis's length
+};
+AxisBudget fit_axis_budget(const std::vector<BudgetSample>& samples);
 
 // A number in the grammar: four significant digits, never an exponent form the reader would
 // misread, "0" for zero.
