@@ -26,8 +26,8 @@ grammars=()
 for f in $(find examples -name '*.ramus' | sort); do
   grep -q 'lsystem ' "$f" && grammars+=("$f")
 done
-# Grammars inferred from the scans by both methods (the .rmb holds their lsystem block; the
-# voxel rules of a wavelet grammar are not in version 1). Scans a method cannot read or that
+# Grammars inferred from the scans by both methods (the .rmb holds their lsystem block and a
+# wavelet grammar's voxel rules). Scans a method cannot read or that
 # take too long are left out and named on stderr.
 for scan in "$data"/*.xyz "$data"/*.asc "$data"/*.txt "$data"/*.las; do
   [ -f "$scan" ] || continue
@@ -42,8 +42,8 @@ for scan in "$data"/*.xyz "$data"/*.asc "$data"/*.txt "$data"/*.las; do
   done
 done
 
-echo "| Grammar | .ramus | .rmb | .rmb 1e-3 | .rmb zstd | .rmb stripped | stripped 1e-3 zstd | .glb | Draco .glb | Draco / .rmb | decode ns/byte |"
-echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+echo "| Grammar | .ramus | .rmb v1 | .rmb | .rmb 1e-3 | .rmb zstd | .rmb stripped | stripped 1e-3 zstd v1 | stripped 1e-3 zstd | .glb | Draco .glb | Draco / .rmb | Draco / smallest | decode ns/byte |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
 for g in "${grammars[@]}"; do
   name="$(basename "${g%.ramus}")"
   if ! "$ramus" -q build "$g" --target binary -o "$work/$name.rmb" 2>"$work/build.log"; then
@@ -54,6 +54,10 @@ for g in "${grammars[@]}"; do
   "$ramus" -q build "$g" --target binary --zstd -o "$work/$name.z.rmb"
   "$ramus" -q build "$g" --target binary --strip -o "$work/$name.s.rmb"
   "$ramus" -q build "$g" --target binary --strip --tolerance 1e-3 --zstd -o "$work/$name.sqz.rmb"
+  # Format version 1 (before the compact layout of version 2), for comparison.
+  "$ramus" -q build "$g" --target binary --rmb-version 1 -o "$work/$name.v1.rmb"
+  "$ramus" -q build "$g" --target binary --rmb-version 1 --strip --tolerance 1e-3 --zstd \
+    -o "$work/$name.sqz.v1.rmb"
   glb=0
   draco=0
   if [ "$sizes_only" != 1 ] && "$ramus" -q build "$g" -o "$work/$name.glb" >/dev/null 2>&1; then  # (param_p42 draws nothing)
@@ -69,9 +73,10 @@ for g in "${grammars[@]}"; do
   awk -v n="$label" -v s="$(stat -c %s "$g")" -v r="$rmb" -v q="$(stat -c %s "$work/$name.q.rmb")" \
       -v z="$(stat -c %s "$work/$name.z.rmb")" -v st="$(stat -c %s "$work/$name.s.rmb")" \
       -v sqz="$(stat -c %s "$work/$name.sqz.rmb")" -v m="$glb" -v d="$draco" \
+      -v v1="$(stat -c %s "$work/$name.v1.rmb")" -v sqz1="$(stat -c %s "$work/$name.sqz.v1.rmb")" \
       -v v="$speed" 'BEGIN {
-    ratio = "n/a"; dtext = "n/a"
-    if (d > 0) { ratio = sprintf("%.0fx", d / r); dtext = d }
-    printf "| `%s` | %d | %d | %d | %d | %d | %d | %d | %s | %s | %s |\n", n, s, r, q, z, st, sqz, m, dtext, ratio, v
+    ratio = "n/a"; ratio2 = "n/a"; dtext = "n/a"
+    if (d > 0) { ratio = sprintf("%.0fx", d / r); ratio2 = sprintf("%.0fx", d / sqz); dtext = d }
+    printf "| `%s` | %d | %d | %d | %d | %d | %d | %d | %d | %d | %s | %s | %s | %s |\n", n, s, v1, r, q, z, st, sqz1, sqz, m, dtext, ratio, ratio2, v
   }'
 done

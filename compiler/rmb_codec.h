@@ -16,13 +16,18 @@
 
 #include "compiler/infer/wavelet/voxel_grammar.h"
 #include "compiler/ir.h"
+#include "compiler/rmb_pieces.h"
 #include "formats/rmb/rmb_io.h"
 
 namespace ramus {
 
 using rmb::RmbError;
 
-inline constexpr std::uint16_t kRmbVersion = 1;
+// The version written. Version 2 leaves out what the instructions imply (the constant pool's
+// repeated values, the constant operands' and jumps' absolute indices, most code records);
+// version 1 files are still read (docs/binary-format.md, Versions).
+inline constexpr std::uint16_t kRmbVersion = 2;
+inline constexpr std::uint16_t kRmbOldestVersion = 1;
 
 // Section ids, in the order they must appear (docs/binary-format.md, Sections).
 enum class RmbSection : std::uint8_t {
@@ -35,7 +40,7 @@ enum class RmbSection : std::uint8_t {
   Productions = 7,
   Axiom = 8,
   Ignored = 9,
-  Pieces = 10,      // reserved: piece sets
+  Pieces = 10,      // optional: the piece sets of `pieces` blocks (compiler/rmb_pieces.h)
   VoxelRules = 11,  // optional: the voxel rule tables of `voxels` blocks
 };
 
@@ -53,11 +58,18 @@ struct RmbVoxelTable {
   std::vector<wavelet::VoxelRule> rules;
 };
 
-// Everything an .rmb holds: the lsystem block and the voxel rule tables.
+// Everything an .rmb holds: the lsystem block, the piece sets and the voxel rule tables. A file
+// whose source has no lsystem block (only `pieces` blocks) holds an empty grammar whose name is
+// empty (rmb_has_lsystem).
 struct RmbContents {
   ir::Grammar grammar;
   std::vector<RmbVoxelTable> voxels;
+  RmbPieces pieces;
 };
+
+// Whether the grammar stands for an lsystem block: a block always has a name, so the empty
+// name marks a file built from pieces blocks alone.
+inline bool rmb_has_lsystem(const ir::Grammar& g) { return !g.name.empty(); }
 
 // Header flags (u16 at offset 6).
 inline constexpr std::uint16_t kRmbQuantized = 1;  // bit 0: reals quantized (lossy, on request)
@@ -75,6 +87,9 @@ struct RmbEncodeOptions {
   // stripped grammar names each production by its index instead ("production 3"; see
   // rmb_stripped_location), for error messages and dumps alike.
   bool strip = false;
+  // The format version to write: 2 (the default), or 1 for decoders that read only version 1
+  // (ramus build --rmb-version 1; the size benchmark compares both).
+  int version = kRmbVersion;
 };
 
 // What a decoded stripped file has in place of the missing debug information: production i's
@@ -94,6 +109,9 @@ std::string encode_rmb(const ir::Grammar& g, const RmbEncodeOptions& options = {
 // With voxel rule tables (section 11, written only when `voxels` is not empty).
 std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& voxels,
                        const RmbEncodeOptions& options = {});
+// With piece sets (section 10, written only when `pieces` is not empty) and voxel rule tables.
+std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& voxels,
+                       const RmbPieces& pieces, const RmbEncodeOptions& options = {});
 
 struct RmbDecodeOptions {
   // Off only for fuzzing, to reach the structural checks behind the checksum.
@@ -102,7 +120,7 @@ struct RmbDecodeOptions {
 
 ir::Grammar decode_rmb(std::string_view bytes, const RmbDecodeOptions& options = {},
                        std::vector<rmb::TraceEntry>* trace = nullptr);
-// The same, with the voxel rule tables (verified like everything else).
+// The same, with the piece sets and the voxel rule tables (verified like everything else).
 RmbContents decode_rmb_contents(std::string_view bytes, const RmbDecodeOptions& options = {},
                                 std::vector<rmb::TraceEntry>* trace = nullptr);
 

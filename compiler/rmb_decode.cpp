@@ -7,6 +7,7 @@
 #include "compiler/rmb_codec.h"
 #include "compiler/rmb_verify.h"
 #include "compiler/rmb_zstd.h"
+#include "core/number_text.h"
 
 namespace ramus {
 
@@ -18,7 +19,7 @@ constexpr std::size_t kMaxFile = std::size_t(64) << 20;
 constexpr std::size_t kMaxString = std::size_t(1) << 20;
 constexpr std::size_t kMaxLocation = 4096;
 constexpr std::size_t kHeader = 8, kTrailer = 4;
-constexpr std::size_t kSectionCount = 9;  // Meta .. Ignored, all required in version 1
+constexpr std::size_t kSectionCount = 9;  // Meta .. Ignored, all required
 
 struct Decoder {
   std::string_view bytes;
@@ -29,11 +30,14 @@ struct Decoder {
   bool quantized = false;  // flag bit 0: reals are multiples of 2^exponent
   int exponent = 0;
   bool stripped = false;  // flag bit 2: no location indices, no production texts
+  int version = kRmbVersion;
   std::vector<RmbVoxelTable> voxels;
+  RmbPieces pieces;
 
   Reader section(std::size_t b, std::size_t e) {
     Reader r(bytes, b, e, trace);
     if (quantized && exponent_known) r.quantize(exponent);
+    if (version >= 2) r.decimal();  // version 2 reals (formats/rmb/rmb_io.h)
     return r;
   }
   bool exponent_known = false;
@@ -101,7 +105,7 @@ struct Decoder {
   }
 
   void constants(Reader& r) {
-    const std::size_t n = r.count("constants", kMaxFile, quantized ? 3 : 10);
+    const std::size_t n = r.count("constants", kMaxFile, quantized || version >= 2 ? 3 : 10);
     for (std::size_t i = 0; i < n; ++i) {
       r.heading("constant " + std::to_string(i));
       ir::Constant c;
@@ -128,16 +132,47 @@ struct Decoder {
   }
 
   void bytecode(Reader& r) {
-    const std::size_t nc = r.count("constant pool size", kMaxFile, quantized ? 1 : 8);
-    g.consts.reserve(nc);
-    for (std::size_t i = 0; i < nc; ++i) g.consts.push_back(r.real("const"));
+    if (version == 1) {
+      const std::size_t nc = r.count("constant pool size", kMaxFile, quantized ? 1 : 8);
+      g.consts.reserve(nc);
+      for (std::size_t i = 0; i < nc; ++i) g.consts.push_back(r.real("const"));
+    } else {  // each entry: a repeat of an earlier value, or a new one
+      const std::size_t nc = r.count("constant pool size", kMaxFile);
+      g.consts.reserve(nc);
+      std::vector<double> values;
+      for (std::size_t i = 0; i < nc; ++i) {
+        const std::uint64_t k = r.bounded("value index", values.size());
+        if (k == values.size()) {
+          r.explain("new");
+          values.push_back(r.real("const"));
+        } else {
+          r.explain(shortest_text(values[k]));
+        }
+        g.consts.push_back(values[k]);
+      }
+    }
     const std::size_t ni = r.count("instructions", kMaxFile);
     g.code.reserve(ni);
+    std::int64_t next_const = 0;
     for (std::size_t i = 0; i < ni; ++i) {
       const std::uint8_t op = r.u8("op");
       if (op > std::uint8_t(ir::Op::Call)) r.fail_at(r.pos() - 1, "expected an opcode <= 20");
       ir::Instr in{ir::Op(op), 0};
-      if (rmb_has_operand(in.op)) in.a = std::uint32_t(r.bounded("operand", 0xFFFFFFFEu));
+      if (version >= 2 &&
+          (in.op == ir::Op::Const || in.op == ir::Op::Jump || in.op == ir::Op::JumpIfFalse)) {
+        // Relative: to the pool entry after the previous const's, to the next instruction.
+        const std::size_t at = r.pos();
+        const std::int64_t base = in.op == ir::Op::Const ? next_const : std::int64_t(i) + 1;
+        const std::int64_t d =
+            r.svarint(in.op == ir::Op::Const ? "pool index delta" : "jump delta");
+        if (d < -base || d > std::int64_t(0xFFFFFFFEu) - base) {
+          r.fail_at(at, "expected an operand in 0..4294967294");
+        }
+        in.a = std::uint32_t(base + d);
+        if (in.op == ir::Op::Const) next_const = std::int64_t(in.a) + 1;
+      } else if (rmb_has_operand(in.op)) {
+        in.a = std::uint32_t(r.bounded("operand", 0xFFFFFFFEu));
+      }
       g.code.push_back(in);
     }
   }
@@ -147,14 +182,23 @@ struct Decoder {
   }
 
   void codes(Reader& r) {
-    const std::size_t n = r.count("codes", kMaxFile, stripped ? 4 : 5);  // no `where`
+    // Version 2: varint length << 1 | explicit, the rest only when explicit (else implied by
+    // the instructions, rmb_implied_code); version 1: every record in full.
+    const std::size_t n = r.count("codes", kMaxFile, version == 1 ? (stripped ? 4 : 5) : 1);
     std::int64_t prev_end = 0;
     for (std::size_t i = 0; i < n; ++i) {
       r.heading("code " + std::to_string(i));
       code_at.push_back(r.pos());
       ir::Code c;
-      const std::int64_t begin = prev_end + r.svarint("begin delta");
-      const std::uint64_t len = r.varint("length");
+      bool full = true;
+      std::uint64_t len = 0;
+      if (version >= 2) {
+        const std::uint64_t v = r.varint("length << 1 | explicit");
+        len = v >> 1;
+        full = v & 1;
+      }
+      const std::int64_t begin = full ? prev_end + r.svarint("begin delta") : prev_end;
+      if (version == 1) len = r.varint("length");
       if (begin < 0 || std::uint64_t(begin) > g.code.size() || len > g.code.size() - begin) {
         r.fail_at(code_at.back(), "expected a code range inside the " +
                                       std::to_string(g.code.size()) + " instructions");
@@ -162,35 +206,71 @@ struct Decoder {
       c.begin = std::uint32_t(begin);
       c.end = std::uint32_t(begin + std::int64_t(len));
       prev_end = c.end;
-      c.max_stack = std::uint16_t(r.bounded("max_stack", kRmbMaxStack));
-      const std::uint8_t flags = r.u8("shape | random << 2");
-      if (flags > 7) r.fail_at(r.pos() - 1, "expected shape flags <= 7");
-      c.shape = ir::Code::Shape(flags & 3);
-      c.random = flags & 4;
-      using Shape = ir::Code::Shape;
-      if (c.shape == Shape::Constant || c.shape == Shape::ParamOpConst) c.value = r.real("value");
-      if (c.shape == Shape::Param || c.shape == Shape::ParamOpConst) {
-        c.slot = std::uint32_t(r.bounded("slot", ir::kMaxSlots - 1));
-      }
-      if (c.shape == Shape::ParamOpConst) {
-        const std::uint8_t op = r.u8("op");
-        if (op < std::uint8_t(ir::Op::Add) || op > std::uint8_t(ir::Op::Div)) {
-          r.fail_at(r.pos() - 1, "expected op add, sub, mul or div");
+      if (full) {
+        c.max_stack = std::uint16_t(r.bounded("max_stack", kRmbMaxStack));
+        const std::uint8_t flags = r.u8("shape | random << 2");
+        if (flags > 7) r.fail_at(r.pos() - 1, "expected shape flags <= 7");
+        c.shape = ir::Code::Shape(flags & 3);
+        c.random = flags & 4;
+        using Shape = ir::Code::Shape;
+        if (c.shape == Shape::Constant || c.shape == Shape::ParamOpConst) c.value = r.real("value");
+        if (c.shape == Shape::Param || c.shape == Shape::ParamOpConst) {
+          c.slot = std::uint32_t(r.bounded("slot", ir::kMaxSlots - 1));
         }
-        c.op = ir::Op(op);
+        if (c.shape == Shape::ParamOpConst) {
+          const std::uint8_t op = r.u8("op");
+          if (op < std::uint8_t(ir::Op::Add) || op > std::uint8_t(ir::Op::Div)) {
+            r.fail_at(r.pos() - 1, "expected op add, sub, mul or div");
+          }
+          c.op = ir::Op(op);
+        }
+      } else {
+        const ir::Code implied = rmb_implied_code(g, c.begin, c.end);
+        if (implied.max_stack > kRmbMaxStack) {
+          r.fail_at(code_at.back(),
+                    "expected an expression whose stack can be followed and is "
+                    "at most 256 deep");
+        }
+        c.max_stack = implied.max_stack;
+        c.shape = implied.shape;
+        c.random = implied.random;
+        c.value = implied.value;
+        c.slot = implied.slot;
+        c.op = implied.op;
       }
       if (!stripped) c.where = location(r);
       g.codes.push_back(c);
     }
   }
 
+  // Code references: version 1 absolute; version 2 relative to next_code, the code after the
+  // one referenced before in the same section (reset per section).
+  std::int64_t next_code = 0;
   ir::CodeId code_id(Reader& r, const char* field) {
     if (g.codes.empty()) r.fail("expected a code id, but the grammar has no codes");
-    return ir::CodeId(r.bounded(field, g.codes.size() - 1));
+    if (version == 1) return ir::CodeId(r.bounded(field, g.codes.size() - 1));
+    const std::size_t at = r.pos();
+    return relative_code(r, at, next_code + r.svarint(field));
   }
   ir::CodeId optional_code(Reader& r, const char* field) {
-    const std::uint64_t v = r.bounded(field, g.codes.size());
-    return v == 0 ? ir::kNoCode : ir::CodeId(v - 1);
+    if (version == 1) {
+      const std::uint64_t v = r.bounded(field, g.codes.size());
+      return v == 0 ? ir::kNoCode : ir::CodeId(v - 1);
+    }
+    const std::size_t at = r.pos();
+    const std::uint64_t v = r.varint(field);
+    if (v == 0) return ir::kNoCode;
+    return relative_code(r, at, next_code + rmb::unzigzag(v - 1));
+  }
+  // A version-2 code id c read at `at`: checked, and the base of the next relative one.
+  ir::CodeId relative_code(Reader& r, std::size_t at, std::int64_t c) {
+    if (c < 0 || c >= std::int64_t(g.codes.size())) {
+      r.fail_at(at, "expected a code id below " + std::to_string(g.codes.size()) + ", found " +
+                        std::to_string(c));
+    }
+    r.explain("code " + std::to_string(c));
+    next_code = c + 1;
+    return ir::CodeId(c);
   }
   ir::SymbolId symbol(Reader& r) { return ir::SymbolId(r.bounded("symbol", g.symbols.size() - 1)); }
 
@@ -228,6 +308,7 @@ struct Decoder {
   }
 
   void productions(Reader& r) {
+    next_code = 0;
     const std::size_t n = r.count("productions", kMaxFile, stripped ? 8 : 10);
     for (std::size_t i = 0; i < n; ++i) {
       r.heading("production " + std::to_string(i));
@@ -238,7 +319,7 @@ struct Decoder {
       p.predecessor = pattern(r);
       patterns(r, "left context", p.left);
       patterns(r, "right context", p.right);
-      p.guard = optional_code(r, "guard + 1 (0: none)");
+      p.guard = optional_code(r, version == 1 ? "guard + 1 (0: none)" : "guard (0: none)");
       p.nslots = std::uint16_t(r.bounded("nslots", ir::kMaxSlots));
       if (stripped) {
         p.text = "#" + std::to_string(i);
@@ -257,7 +338,8 @@ struct Decoder {
         r.heading("alternative " + std::to_string(a));
         ir::Alternative alt;
         alt.production = std::uint32_t(i);
-        alt.probability = optional_code(r, "probability + 1 (0: none)");
+        alt.probability =
+            optional_code(r, version == 1 ? "probability + 1 (0: none)" : "probability (0: none)");
         alt.succ_begin = std::uint32_t(g.successors.size());
         alt.out_params = modules(r, g.successors, 65535);
         alt.succ_end = std::uint32_t(g.successors.size());
@@ -268,7 +350,10 @@ struct Decoder {
     }
   }
 
-  void axiom(Reader& r) { modules(r, g.axiom, ir::kMaxSlots); }
+  void axiom(Reader& r) {
+    next_code = 0;
+    modules(r, g.axiom, ir::kMaxSlots);
+  }
 
   // A stripped file's stand-in locations (rmb_stripped_location): "production i" for each
   // production and every expression it holds first, "axiom" for the rest.
@@ -378,6 +463,9 @@ struct Decoder {
         return axiom(r);
       case RmbSection::Ignored:
         return ignored(r);
+      case RmbSection::Pieces:
+        pieces = read_rmb_pieces(r);
+        return;
       case RmbSection::VoxelRules:
         return voxel_rules(r);
       default:
@@ -398,8 +486,8 @@ std::uint16_t check_header(Reader& r, std::string_view bytes, const RmbDecodeOpt
   if (r.raw("magic", 4) != std::string_view("RMB\x1a", 4))
     r.fail_at(0, "expected magic \"RMB\\x1a\"");
   const std::uint16_t version = r.u16("version");
-  if (version != kRmbVersion)
-    r.fail_at(4, "expected format version 1, found " + std::to_string(version));
+  if (version < kRmbOldestVersion || version > kRmbVersion)
+    r.fail_at(4, "expected format version 1 or 2, found " + std::to_string(version));
   const std::uint16_t flags = r.u16("flags");
   if (flags & ~kRmbKnownFlags) {
     r.fail_at(6, "expected flags with only bits 0 (quantized), 1 (zstd) and 2 (stripped), found " +
@@ -448,27 +536,42 @@ RmbContents decode_rmb_contents(std::string_view bytes, const RmbDecodeOptions& 
     inner.verify_checksum = false;  // checked over the compressed file
     return decode_rmb_contents(image, inner, trace);
   }
-  Decoder d{bytes, trace, ir::make_grammar(""), {}};  // the turtle symbols are implied
+  Decoder d{};
+  d.bytes = bytes;
+  d.trace = trace;
+  d.g = ir::make_grammar("");  // the turtle symbols are implied
   const std::size_t body_end = bytes.size() >= kTrailer ? bytes.size() - kTrailer : 0;
   Reader r(bytes, 0, body_end, trace);
   r.heading("header");
   const std::uint16_t flags = check_header(r, bytes, options);
+  d.version = std::uint8_t(bytes[4]) | (std::uint8_t(bytes[5]) << 8);
   d.quantized = flags & kRmbQuantized;
   d.stripped = flags & kRmbStripped;
   const std::size_t count_at = r.pos();
   const std::size_t n = r.count("section count", 255, 3);
-  if (n != kSectionCount && n != kSectionCount + 1) {  // the voxel rule tables are optional
-    r.fail_at(count_at, "expected 9 or 10 sections, found " + std::to_string(n));
+  // Sections 1..9 always; then the optional 10 (piece sets) and 11 (voxel rule tables).
+  if (n < kSectionCount || n > kSectionCount + 2) {
+    r.fail_at(count_at, "expected 9 to 11 sections, found " + std::to_string(n));
   }
   std::size_t expect_at = 0;  // sections are contiguous, right after the table
   std::vector<std::pair<std::size_t, std::size_t>> ranges;
+  std::vector<std::size_t> ids;
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t at = r.pos();
     const std::uint64_t id = r.varint("section id");
-    const std::size_t want = i < kSectionCount ? i + 1 : std::size_t(RmbSection::VoxelRules);
-    if (id != want)
-      r.fail_at(at, "expected section id " + std::to_string(want) + " (" + section_name(want) +
-                        "), found " + std::to_string(id));
+    const bool ok = i < kSectionCount ? id == i + 1
+                                      : (id == std::size_t(RmbSection::Pieces) ||
+                                         id == std::size_t(RmbSection::VoxelRules)) &&
+                                            id > ids.back();
+    if (!ok) {
+      const std::string want = i < kSectionCount
+                                   ? std::to_string(i + 1) + " (" + section_name(i + 1) + ")"
+                               : ids.back() < std::size_t(RmbSection::Pieces)
+                                   ? "10 (piece sets) or 11 (voxel rule tables)"
+                                   : "11 (voxel rule tables)";
+      r.fail_at(at, "expected section id " + want + ", found " + std::to_string(id));
+    }
+    ids.push_back(std::size_t(id));
     const std::uint64_t off = r.varint("offset");
     const std::uint64_t len = r.bounded("length", body_end);
     if (i > 0 && off != expect_at)
@@ -481,7 +584,7 @@ RmbContents decode_rmb_contents(std::string_view bytes, const RmbDecodeOptions& 
   if (expect_at != body_end)
     r.fail_at(expect_at, "expected the CRC-32 right after the last section");
   for (std::size_t i = 0; i < n; ++i) {
-    const std::size_t id = i < kSectionCount ? i + 1 : std::size_t(RmbSection::VoxelRules);
+    const std::size_t id = ids[i];
     Reader s = d.section(ranges[i].first, ranges[i].second);
     s.heading(std::string("section ") + std::to_string(id) + ": " + section_name(id));
     d.run_section(RmbSection(id), s);
@@ -494,10 +597,15 @@ RmbContents decode_rmb_contents(std::string_view bytes, const RmbDecodeOptions& 
     tail.heading("trailer");
     tail.u32("crc32");
   }
+  if (!rmb_has_lsystem(d.g) && (!d.g.productions.empty() || !d.g.axiom.empty())) {
+    throw RmbError(ranges.front().first,
+                   "expected a named lsystem block: the grammar has " +
+                       std::string(d.g.productions.empty() ? "an axiom" : "productions"));
+  }
   verify_rmb_codes(d.g, d.code_at);
   if (d.stripped) d.name_stripped_locations();
   d.g.build_tables();
-  return RmbContents{std::move(d.g), std::move(d.voxels)};
+  return RmbContents{std::move(d.g), std::move(d.voxels), std::move(d.pieces)};
 }
 
 std::string format_rmb_trace(std::string_view bytes, const std::vector<rmb::TraceEntry>& trace) {

@@ -5,6 +5,7 @@
 #include <map>
 #include <set>
 
+#include "compiler/rmb_pieces_ast.h"
 #include "compiler/rmb_voxels.h"
 #include "core/number_text.h"
 #include "grammar/builtins.h"
@@ -398,8 +399,30 @@ ast::File decompile_to_ast(const ir::Grammar& g) { return Decompiler(g).run(); }
 
 std::string decompile(const ir::Grammar& g) { return format_file(decompile_to_ast(g)); }
 
+ast::Expr decompiled_number(double v) { return number(v); }
+
 std::string decompile(const RmbContents& contents) {
-  ast::File file = decompile_to_ast(contents.grammar);
+  ast::File file;
+  if (rmb_has_lsystem(contents.grammar)) file = decompile_to_ast(contents.grammar);
+  for (const RmbPieceSet& s : contents.pieces.sets) {
+    // Names the language cannot spell would print as other tokens.
+    auto name_ok = [](const std::string& n, const char* what) {
+      if (!is_identifier(n)) {
+        throw DecompileError(std::string(what) + " \"" + n + "\" is not an identifier");
+      }
+    };
+    name_ok(s.name, "pieces block name");
+    for (const RmbPiece& p : s.pieces) {
+      name_ok(p.name, "piece name");
+      for (unsigned char c : p.path) {  // a .ramus string has no escapes
+        if (c < 0x20 || c == '"' || c == 0x7f) {
+          throw DecompileError("the mesh path of piece " + p.name + " has no .ramus spelling");
+        }
+      }
+    }
+    for (const RmbAttachRule& r : s.rules) name_ok(r.rim, "rim name");
+    file.decls.emplace_back(pieces_to_ast(s, contents.pieces));
+  }
   for (const RmbVoxelTable& t : contents.voxels) file.decls.emplace_back(voxels_to_ast(t));
   return format_file(file);
 }

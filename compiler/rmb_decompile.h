@@ -31,10 +31,18 @@ struct DecompileError : std::runtime_error {
 
 ast::File decompile_to_ast(const ir::Grammar& g);
 
+// A number as the decompiled text writes it: the shortest text that reads back as the same
+// double, a negative value as unary minus of its magnitude. Throws DecompileError for a value
+// that is not finite.
+ast::Expr decompiled_number(double v);
+
 // The formatted text of decompile_to_ast (grammar/format.h).
 std::string decompile(const ir::Grammar& g);
 
-// A whole .rmb: the lsystem block, then its `voxels` blocks (compiler/rmb_voxels.h).
+// A whole .rmb: the lsystem block (none for a file built from pieces blocks alone), its
+// `pieces` blocks (compiler/rmb_pieces_ast.h; an embedded mesh is named by its file name in
+// contents.pieces.meshes, which the caller writes beside the text), then its `voxels` blocks
+// (compiler/rmb_voxels.h).
 std::string decompile(const RmbContents& contents);
 
 }  // namespace ramus

@@ -2,7 +2,9 @@
 // buffer; the section table, whose varint offsets depend on its own length, is then sized by
 // iterating to a fixed point, and the CRC-32 of everything closes the file.
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <unordered_map>
 #include <utility>
 
 #include "compiler/rmb_codec.h"
@@ -69,30 +71,70 @@ void write_locations(Writer& w, const ir::Grammar& g, bool stripped) {
   }
 }
 
-void write_bytecode(Writer& w, const ir::Grammar& g) {
+// Version 2 (docs/binary-format.md, section 5): each pool entry is a new value or a repeat of
+// an earlier one; a const operand is the pool index relative to the one after the previous
+// const's, a jump's relative to the next instruction -- both usually 0.
+void write_bytecode(Writer& w, const ir::Grammar& g, int version) {
+  if (version == 1) {  // every pool value, every operand absolute
+    w.varint(g.consts.size());
+    for (double v : g.consts) w.real(v);
+    w.varint(g.code.size());
+    for (const ir::Instr& in : g.code) {
+      w.u8(std::uint8_t(in.op));
+      if (rmb_has_operand(in.op)) w.varint(in.a);
+    }
+    return;
+  }
   w.varint(g.consts.size());
-  for (double v : g.consts) w.real(v);
+  // By the bits of the value as stored (-0 and NaN payloads kept; in a quantized file two
+  // values of one quantum are one), so that re-encoding a decoded file gives the same bytes.
+  std::unordered_map<std::uint64_t, std::uint64_t> seen;
+  for (double v : g.consts) {
+    const auto [it, fresh] =
+        seen.emplace(std::bit_cast<std::uint64_t>(w.stored_real(v)), seen.size());
+    w.varint(it->second);
+    if (fresh) w.real(v);
+  }
   w.varint(g.code.size());
-  for (const ir::Instr& in : g.code) {
+  std::int64_t next_const = 0;
+  for (std::size_t i = 0; i < g.code.size(); ++i) {
+    const ir::Instr& in = g.code[i];
     w.u8(std::uint8_t(in.op));
-    if (rmb_has_operand(in.op)) w.varint(in.a);
+    if (in.op == ir::Op::Const) {
+      w.svarint(std::int64_t(in.a) - next_const);
+      next_const = std::int64_t(in.a) + 1;
+    } else if (in.op == ir::Op::Jump || in.op == ir::Op::JumpIfFalse) {
+      w.svarint(std::int64_t(in.a) - std::int64_t(i) - 1);
+    } else if (rmb_has_operand(in.op)) {
+      w.varint(in.a);
+    }
   }
 }
 
-void write_codes(Writer& w, const ir::Grammar& g, bool stripped) {
+// Version 2: a code whose record its instructions imply (rmb_code_is_implied) and that starts
+// where the previous one ended is just its length; the others are written out in full.
+void write_codes(Writer& w, const ir::Grammar& g, bool stripped, int version) {
   w.varint(g.codes.size());
   std::uint32_t prev_end = 0;
   for (const ir::Code& c : g.codes) {
     check(c.begin <= c.end, "a code range that ends before it begins");
-    w.svarint(std::int64_t(c.begin) - std::int64_t(prev_end));  // delta: usually 0
-    w.varint(c.end - c.begin);
+    const bool implied = version >= 2 && c.begin == prev_end && rmb_code_is_implied(g, c);
+    if (version == 1) {  // begin delta, then length
+      w.svarint(std::int64_t(c.begin) - std::int64_t(prev_end));
+      w.varint(c.end - c.begin);
+    } else {
+      w.varint((std::uint64_t(c.end - c.begin) << 1) | (implied ? 0 : 1));
+      if (!implied) w.svarint(std::int64_t(c.begin) - std::int64_t(prev_end));
+    }
+    if (!implied) {
+      w.varint(c.max_stack);
+      w.u8(std::uint8_t(std::uint8_t(c.shape) | (c.random ? 4 : 0)));
+      using Shape = ir::Code::Shape;
+      if (c.shape == Shape::Constant || c.shape == Shape::ParamOpConst) w.real(c.value);
+      if (c.shape == Shape::Param || c.shape == Shape::ParamOpConst) w.varint(c.slot);
+      if (c.shape == Shape::ParamOpConst) w.u8(std::uint8_t(c.op));
+    }
     prev_end = c.end;
-    w.varint(c.max_stack);
-    w.u8(std::uint8_t(std::uint8_t(c.shape) | (c.random ? 4 : 0)));
-    using Shape = ir::Code::Shape;
-    if (c.shape == Shape::Constant || c.shape == Shape::ParamOpConst) w.real(c.value);
-    if (c.shape == Shape::Param || c.shape == Shape::ParamOpConst) w.varint(c.slot);
-    if (c.shape == Shape::ParamOpConst) w.u8(std::uint8_t(c.op));
     if (!stripped) w.varint(c.where);
   }
 }
@@ -108,8 +150,35 @@ void write_patterns(Writer& w, const std::vector<ir::Pattern>& ps) {
   for (const ir::Pattern& p : ps) write_pattern(w, p);
 }
 
-void write_modules(Writer& w, const ir::Grammar& g, std::uint32_t b, std::uint32_t e,
-                   const std::vector<ir::SuccModule>& mods) {
+// Code references (version 2): relative to the code after the one referenced before in the
+// same section, so the usual run of fresh codes 274, 275, ... is a run of zeros.
+struct CodeRefs {
+  bool absolute = false;  // version 1: the id itself (optional ones + 1)
+  std::int64_t next = 0;
+  void write(Writer& w, ir::CodeId c) {
+    if (absolute) {
+      w.varint(c);
+      return;
+    }
+    w.svarint(std::int64_t(c) - next);
+    next = std::int64_t(c) + 1;
+  }
+  void write_optional(Writer& w, ir::CodeId c) {  // 0: none; else the delta's zigzag + 1
+    if (absolute) {
+      w.varint(c == ir::kNoCode ? 0 : std::uint64_t(c) + 1);
+      return;
+    }
+    if (c == ir::kNoCode) {
+      w.varint(0);
+      return;
+    }
+    w.varint(rmb::zigzag(std::int64_t(c) - next) + 1);
+    next = std::int64_t(c) + 1;
+  }
+};
+
+void write_modules(Writer& w, const ir::Grammar& g, CodeRefs& refs, std::uint32_t b,
+                   std::uint32_t e, const std::vector<ir::SuccModule>& mods) {
   check(b <= e && e <= mods.size(), "a module range outside its array");
   w.varint(e - b);
   for (std::uint32_t i = b; i < e; ++i) {
@@ -117,20 +186,20 @@ void write_modules(Writer& w, const ir::Grammar& g, std::uint32_t b, std::uint32
     check(std::size_t(m.arg_begin) + m.nargs <= g.args.size(), "arguments outside the args array");
     w.varint(m.symbol);
     w.varint(m.nargs);
-    for (std::uint32_t k = 0; k < m.nargs; ++k) w.varint(g.args[m.arg_begin + k]);
+    for (std::uint32_t k = 0; k < m.nargs; ++k) refs.write(w, g.args[m.arg_begin + k]);
   }
 }
 
-std::uint64_t optional_code(ir::CodeId c) { return c == ir::kNoCode ? 0 : std::uint64_t(c) + 1; }
-
-void write_productions(Writer& w, const ir::Grammar& g, bool stripped) {
+void write_productions(Writer& w, const ir::Grammar& g, bool stripped, int version) {
+  CodeRefs refs;
+  refs.absolute = version == 1;
   w.varint(g.productions.size());
   for (const ir::Production& p : g.productions) {
     w.u8(std::uint8_t(p.kind));
     write_pattern(w, p.predecessor);
     write_patterns(w, p.left);
     write_patterns(w, p.right);
-    w.varint(optional_code(p.guard));
+    refs.write_optional(w, p.guard);
     w.varint(p.nslots);
     if (!stripped) {
       w.varint(p.where);
@@ -141,15 +210,15 @@ void write_productions(Writer& w, const ir::Grammar& g, bool stripped) {
       check(p.key.size() == p.query.size(), "a rule-space key without its query");
       w.varint(p.key.size());
       for (double k : p.key) w.real(k);
-      for (ir::CodeId c : p.query) w.varint(c);
+      for (ir::CodeId c : p.query) refs.write(w, c);
     }
     check(p.alt_begin <= p.alt_end && p.alt_end <= g.alternatives.size(),
           "an alternative range outside its array");
     w.varint(p.alt_end - p.alt_begin);
     for (std::uint32_t a = p.alt_begin; a < p.alt_end; ++a) {
       const ir::Alternative& alt = g.alternatives[a];
-      w.varint(optional_code(alt.probability));
-      write_modules(w, g, alt.succ_begin, alt.succ_end, g.successors);
+      refs.write_optional(w, alt.probability);
+      write_modules(w, g, refs, alt.succ_begin, alt.succ_end, g.successors);
     }
   }
 }
@@ -219,12 +288,23 @@ std::string encode_rmb(const ir::Grammar& g, const RmbEncodeOptions& options) {
 
 std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& voxels,
                        const RmbEncodeOptions& options) {
+  return encode_rmb(g, voxels, RmbPieces{}, options);
+}
+
+std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& voxels,
+                       const RmbPieces& pieces, const RmbEncodeOptions& options) {
   std::optional<int> exponent;
   if (options.tolerance) exponent = rmb_quantum_exponent(*options.tolerance);
   std::vector<std::pair<RmbSection, std::string>> sections;
   const bool strip = options.strip;
+  const int version = options.version;
+  if (version < kRmbOldestVersion || version > kRmbVersion) {
+    throw RmbError(0, "cannot encode: format version " + std::to_string(version) +
+                          " (this encoder writes 1 and 2)");
+  }
   auto add = [&](RmbSection id, auto fill) {
     Writer w;
+    if (version >= 2) w.decimal();  // reals as decimals (and, when quantized, the shorter form)
     if (exponent) {
       if (id == RmbSection::Meta) w.svarint(*exponent);  // the quantum, before everything else
       w.quantize(*exponent);
@@ -237,14 +317,23 @@ std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& v
   add(RmbSection::Constants, write_constants);
   add(RmbSection::Locations,
       [strip](Writer& w, const ir::Grammar& gr) { write_locations(w, gr, strip); });
-  add(RmbSection::Bytecode, write_bytecode);
-  add(RmbSection::Codes, [strip](Writer& w, const ir::Grammar& gr) { write_codes(w, gr, strip); });
-  add(RmbSection::Productions,
-      [strip](Writer& w, const ir::Grammar& gr) { write_productions(w, gr, strip); });
-  add(RmbSection::Axiom, [](Writer& w, const ir::Grammar& gr) {
-    write_modules(w, gr, 0, std::uint32_t(gr.axiom.size()), gr.axiom);
+  add(RmbSection::Bytecode,
+      [version](Writer& w, const ir::Grammar& gr) { write_bytecode(w, gr, version); });
+  add(RmbSection::Codes,
+      [strip, version](Writer& w, const ir::Grammar& gr) { write_codes(w, gr, strip, version); });
+  add(RmbSection::Productions, [strip, version](Writer& w, const ir::Grammar& gr) {
+    write_productions(w, gr, strip, version);
+  });
+  add(RmbSection::Axiom, [version](Writer& w, const ir::Grammar& gr) {
+    CodeRefs refs;
+    refs.absolute = version == 1;
+    write_modules(w, gr, refs, 0, std::uint32_t(gr.axiom.size()), gr.axiom);
   });
   add(RmbSection::Ignored, write_ignored);
+  if (!pieces.empty()) {
+    add(RmbSection::Pieces,
+        [&pieces](Writer& w, const ir::Grammar&) { write_rmb_pieces(w, pieces); });
+  }
   if (!voxels.empty()) {
     add(RmbSection::VoxelRules,
         [&voxels](Writer& w, const ir::Grammar&) { write_voxels(w, voxels); });
@@ -266,7 +355,7 @@ std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& v
   }
   Writer w;
   w.bytes(std::string_view("RMB\x1a", 4));
-  w.u16(kRmbVersion);
+  w.u16(std::uint16_t(version));
   const std::uint16_t flags =
       std::uint16_t((exponent ? kRmbQuantized : 0) | (options.strip ? kRmbStripped : 0));
   w.u16(flags);

@@ -1,6 +1,9 @@
 #include "compiler/rmb_verify.h"
 
+#include <algorithm>
+#include <bit>
 #include <iterator>
+#include <optional>
 #include <string>
 
 #include "formats/rmb/rmb_io.h"
@@ -80,6 +83,77 @@ bool reads_slots(const ir::Grammar& g, const ir::Code& c) {
 }
 
 }  // namespace
+
+ir::Code rmb_implied_code(const ir::Grammar& g, std::uint32_t begin, std::uint32_t end) {
+  ir::Code code;
+  code.begin = begin;
+  code.end = end;
+  const auto op_at = [&](std::uint32_t i) { return g.code[begin + i].op; };
+  const auto const_at = [&](std::uint32_t i) -> std::optional<double> {
+    const std::uint32_t a = g.code[begin + i].a;
+    return a < g.consts.size() ? std::optional<double>(g.consts[a]) : std::nullopt;
+  };
+  const std::uint32_t n = end - begin;
+  // The shapes of finish() in compiler/expr_compile.cpp.
+  if (n == 1 && op_at(0) == ir::Op::Const && const_at(0)) {
+    code.shape = ir::Code::Shape::Constant;
+    code.value = *const_at(0);
+  } else if (n == 1 && op_at(0) == ir::Op::Load && g.code[begin].a < ir::kMaxSlots) {
+    code.shape = ir::Code::Shape::Param;
+    code.slot = g.code[begin].a;
+  } else if (n == 3 && op_at(0) == ir::Op::Load && g.code[begin].a < ir::kMaxSlots &&
+             op_at(1) == ir::Op::Const && const_at(1)) {
+    const ir::Op op = op_at(2);
+    const double k = *const_at(1);
+    if (op == ir::Op::Add || op == ir::Op::Sub || op == ir::Op::Mul ||
+        (op == ir::Op::Div && k != 0)) {
+      code.shape = ir::Code::Shape::ParamOpConst;
+      code.slot = g.code[begin].a;
+      code.value = k;
+      code.op = op;
+    }
+  }
+  // Stack depth along the code, as check_code follows it; the deepest value left.
+  std::vector<int> depth(n + 1, -1);
+  depth[0] = 0;
+  int deepest = 0;
+  bool ok = true;
+  for (std::uint32_t i = 0; i < n && ok; ++i) {
+    const ir::Instr& in = g.code[begin + i];
+    if (in.op == ir::Op::Call && in.a < std::size(kBuiltins) && kBuiltins[in.a].random) {
+      code.random = true;
+    }
+    if (depth[i] < 0) continue;
+    if (in.op == ir::Op::Call && in.a >= std::size(kBuiltins)) {
+      ok = false;
+      break;
+    }
+    const int after = depth[i] + effect(in).delta;
+    deepest = std::max(deepest, after);
+    auto merge = [&](std::uint32_t at) {
+      if (depth[at] == -1) depth[at] = after;
+      ok = ok && depth[at] == after;
+    };
+    if (in.op == ir::Op::Jump || in.op == ir::Op::JumpIfFalse) {
+      if (in.a <= begin + i || in.a > end) {
+        ok = false;
+        break;
+      }
+      merge(in.a - begin);
+    }
+    if (in.op != ir::Op::Jump) merge(i + 1);
+  }
+  code.max_stack = ok ? std::uint16_t(std::min(deepest, 0xFFFF)) : 0xFFFF;
+  return code;
+}
+
+bool rmb_code_is_implied(const ir::Grammar& g, const ir::Code& c) {
+  if (c.begin > c.end || c.end > g.code.size()) return false;
+  const ir::Code i = rmb_implied_code(g, c.begin, c.end);
+  return i.shape == c.shape && i.random == c.random && i.max_stack == c.max_stack &&
+         std::bit_cast<std::uint64_t>(i.value) == std::bit_cast<std::uint64_t>(c.value) &&
+         i.slot == c.slot && i.op == c.op;
+}
 
 bool rmb_has_operand(ir::Op op) {
   return op == ir::Op::Const || op == ir::Op::Load || op == ir::Op::Jump ||

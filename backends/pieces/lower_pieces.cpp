@@ -10,6 +10,7 @@
 
 #include "backends/pieces/piece_build.h"
 #include "grammar/const_eval.h"
+#include "grammar/program_constants.h"
 
 namespace ramus::pieces {
 
@@ -67,41 +68,20 @@ class PiecesLowering {
   }
 
   // const and param of every file, imports first (as the lsystem lowering does).
-  void visit(std::uint32_t file, std::vector<std::uint8_t>& seen) {
-    if (file >= prog_.files.size() || seen[file]) return;
-    seen[file] = 1;
-    if (file < prog_.imports.size()) {
-      for (std::uint32_t dep : prog_.imports[file]) visit(dep, seen);
-    }
-    for (const ast::Decl& d : prog_.files[file].decls) {
-      const auto* cd = std::get_if<ast::ConstDecl>(&d);
-      if (!cd) continue;
-      for (const ast::Binding& b : cd->bindings) {
-        auto def = std::find_if(opt_.defines.begin(), opt_.defines.end(),
-                                [&](const auto& x) { return x.first == b.name.name; });
-        if (cd->is_param && def != opt_.defines.end()) {
-          constants_[b.name.name] = def->second;
-          continue;
-        }
-        if (std::optional<double> v = value(b.value)) constants_[b.name.name] = *v;
-      }
-    }
-  }
   void collect_constants() {
-    std::vector<std::uint8_t> seen(prog_.files.size(), 0);
-    visit(0, seen);
+    constants_ = program_constants(
+        prog_, opt_.defines,
+        [this](const ast::Expr& e, const FoldResult& r) { report_not_constant(e, r); });
+  }
+
+  void report_not_constant(const ast::Expr& e, const FoldResult& r) {
+    error(DiagCode::ConstantNotFinite, r.error ? r.error->span : e.span,
+          r.error ? r.error->message : "the value is not a constant");
   }
 
   std::optional<double> value(const ast::Expr& e) {
-    FoldResult r = evaluate_constant(e, [this](std::string_view n) -> std::optional<double> {
-      auto it = constants_.find(std::string(n));
-      if (it == constants_.end()) return std::nullopt;
-      return it->second;
-    });
-    if (!r.value) {
-      error(DiagCode::ConstantNotFinite, r.error ? r.error->span : e.span,
-            r.error ? r.error->message : "the value is not a constant");
-    }
+    FoldResult r = evaluate_constant(e, lookup_in(constants_));
+    if (!r.value) report_not_constant(e, r);
     return r.value;
   }
 

@@ -5,8 +5,10 @@
 
 #include "compiler/rmb_codec.h"
 #include "compiler/rmb_paths.h"
+#include "compiler/rmb_pieces_ast.h"
 #include "compiler/rmb_voxels.h"
 #include "core/atomic_file.h"
+#include "grammar/check.h"
 #include "grammar/loader.h"
 
 namespace ramus::cli {
@@ -20,39 +22,89 @@ void add_binary_build_options(CLI::App* sub, BinaryBuildArgs& args) {
   sub->add_flag("--strip", args.strip,
                 "--target binary: leave out source locations and production texts (errors "
                 "then name productions by index)");
+  sub->add_option("--rmb-version", args.version,
+                  "--target binary: the format version to write (default 2; 1 for older readers)")
+      ->check(CLI::Range(1, 2));
+  sub->add_flag("--mesh-paths", args.mesh_paths,
+                "--target binary: store mesh(\"file\") pieces as their paths instead of "
+                "embedding the files");
 }
+
+namespace {
+
+bool has_decl_of(const ast::File& f, auto pick) {
+  for (const ast::Decl& d : f.decls) {
+    if (pick(d)) return true;
+  }
+  return false;
+}
+
+// A file of pieces blocks alone has no lsystem block to lower: it is checked, and its .rmb
+// carries the empty, unnamed grammar (rmb_has_lsystem). nullopt: lower the lsystem block.
+std::optional<bool> check_pieces_only(const Program& program, const SourceManager& sm,
+                                      DiagnosticSink& diags) {
+  if (diags.has_errors() || program.files.empty()) return std::nullopt;
+  const auto is_lsystem = [](const ast::Decl& d) {
+    return std::holds_alternative<ast::LSystem>(d);
+  };
+  const auto is_pieces = [](const ast::Decl& d) { return std::holds_alternative<ast::Pieces>(d); };
+  for (const ast::File& f : program.files) {
+    if (has_decl_of(f, is_lsystem)) return std::nullopt;
+  }
+  if (!has_decl_of(program.files[0], is_pieces)) return std::nullopt;
+  check_program(program, sm, diags);
+  print_diagnostics(sm, diags);
+  return !diags.has_errors();
+}
+
+}  // namespace
 
 int build_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::string& output,
                  bool quiet) {
   if (std::filesystem::path(output).extension() != ".rmb") {
     throw UserError("--target binary writes an .rmb file, not " + output);
   }
-  std::optional<ir::Grammar> lowered = lower_for_cli(a);
-  if (!lowered) return 1;
-  ir::Grammar& g = *lowered;
-  if (a.steps) g.settings.derive = *a.steps;
-  // The same bytes from any working directory and any checkout (compiler/rmb_paths.h).
-  make_locations_portable(g, a.file, default_stdlib_dirs());
+  SourceManager sm;
+  DiagnosticSink diags;
+  const Program program = load_program(a.file, sm, diags);
+  std::optional<ir::Grammar> lowered;
+  if (const std::optional<bool> ok = check_pieces_only(program, sm, diags)) {
+    if (!*ok) return 1;
+    lowered = ir::make_grammar("");
+  } else {
+    lowered = lower_for_cli(a);
+    if (!lowered) return 1;
+    if (a.steps) lowered->settings.derive = *a.steps;
+    // The same bytes from any working directory and any checkout (compiler/rmb_paths.h).
+    make_locations_portable(*lowered, a.file, default_stdlib_dirs());
+  }
+  const ir::Grammar& g = *lowered;
   RmbEncodeOptions options;
   options.tolerance = binary.tolerance;
   options.zstd = binary.zstd;
   options.strip = binary.strip;
-  // The voxels blocks of the root file go along as voxel rule tables (section 11).
-  SourceManager sm;
-  DiagnosticSink diags;
-  const Program program = load_program(a.file, sm, diags);
+  options.version = binary.version;
+  // The pieces blocks (section 10) and voxels blocks (section 11) of the root file go along.
+  RmbPiecesOptions pieces_options;
+  pieces_options.defines = to_grow_options(a).defines;
+  pieces_options.mesh_paths = binary.mesh_paths;
   std::vector<RmbVoxelTable> voxels;
+  RmbPieces pieces;
   std::string bytes;
   try {
-    if (!program.files.empty()) voxels = voxel_tables_of(program.files[0], g);
-    bytes = encode_rmb(g, voxels, options);
+    if (!program.files.empty()) {
+      voxels = voxel_tables_of(program.files[0], g);
+      pieces = piece_sets_of(program, a.file, pieces_options);
+    }
+    bytes = encode_rmb(g, voxels, pieces, options);
   } catch (const RmbError& e) {
     throw UserError(a.file + ": " + e.what());
   }
   write_file_atomically(output, bytes);
   if (!quiet) {
-    std::fprintf(stderr, "ramus: wrote %s (%zu bytes: %zu symbols, %zu productions)\n",
-                 output.c_str(), bytes.size(), g.symbols.size(), g.productions.size());
+    std::fprintf(
+        stderr, "ramus: wrote %s (%zu bytes: %zu symbols, %zu productions, %zu pieces blocks)\n",
+        output.c_str(), bytes.size(), g.symbols.size(), g.productions.size(), pieces.sets.size());
   }
   return 0;
 }

@@ -14,12 +14,16 @@ struct BinaryBuildArgs {
   std::optional<double> tolerance;  // lossy: reals within this absolute tolerance
   bool zstd = false;                // compress the sections with zstd
   bool strip = false;               // leave out source locations and production texts
+  bool mesh_paths = false;          // keep mesh("file") pieces as paths, not embedded files
+  int version = 2;                  // the .rmb format version to write
 };
 
 void add_binary_build_options(CLI::App* sub, BinaryBuildArgs& args);
 
 // Lowers the grammar (-D, --seed, --system apply; -n sets the stored derivation length) and
-// writes its .rmb. Returns the exit code: 1 after printing the grammar's diagnostics.
+// writes its .rmb, with the root file's `pieces` blocks (section 10) and `voxels` blocks
+// (section 11). A file with pieces blocks and no lsystem block gives an .rmb whose grammar is
+// empty and unnamed. Returns the exit code: 1 after printing the grammar's diagnostics.
 int build_binary(const GrowArgs& args, const BinaryBuildArgs& binary, const std::string& output,
                  bool quiet);
 

@@ -2,8 +2,11 @@
 
 #include <array>
 #include <bit>
+#include <charconv>
 #include <cmath>
+#include <cstdio>
 #include <cstring>
+#include <optional>
 
 #include "core/number_text.h"
 
@@ -68,16 +71,106 @@ void Writer::varint(std::uint64_t v) {
   u8(std::uint8_t(v));
 }
 
-void Writer::real(double v) {
-  if (quantized_ && std::isfinite(v)) {
-    const double k = std::nearbyint(std::ldexp(v, -exponent_));
-    if (std::fabs(k) <= double(kMaxQuantumMultiple)) {
-      varint(zigzag(std::int64_t(k)) << 1);
-      return;
+double decimal_value(std::int64_t m, int d) {
+  char text[40];
+  const int n = std::snprintf(text, sizeof text, "%llde-%d", static_cast<long long>(m), d);
+  double v = 0;
+  std::from_chars(text, text + n, v);
+  return v;
+}
+
+namespace {
+
+// The decimal code zigzag(m) << 3 | d of v = m * 10^-d, the fewest decimals d <= 6, when v has
+// one (finite, not -0, |m| < 2^53, and m * 10^-d reads back as v bit for bit).
+std::optional<std::uint64_t> decimal_code(double v) {
+  if (!std::isfinite(v) || (v == 0 && std::signbit(v))) return std::nullopt;
+  static const double kPow10[] = {1, 10, 100, 1e3, 1e4, 1e5, 1e6};
+  for (int d = 0; d <= 6; ++d) {
+    const double m = std::nearbyint(v * kPow10[d]);
+    if (!(std::fabs(m) < 9007199254740992.0)) break;
+    const auto mi = static_cast<std::int64_t>(m);
+    if (d > 0 && mi % 10 == 0) continue;  // canonical: the fewest decimals
+    if (std::bit_cast<std::uint64_t>(decimal_value(mi, d)) == std::bit_cast<std::uint64_t>(v)) {
+      return (zigzag(mi) << 3) | std::uint64_t(d);
     }
   }
-  if (quantized_) varint(1);  // the escape: an exact f64 follows
-  f64(v);
+  return std::nullopt;
+}
+
+std::size_t varint_length(std::uint64_t v) {
+  std::size_t n = 1;
+  for (; v >= 0x80; v >>= 7) ++n;
+  return n;
+}
+
+}  // namespace
+
+// Version 2, quantized (docs/binary-format.md, `real`): the shortest of the exact value's
+// decimal code, the quantized value's decimal code and its multiple k as
+// ((zigzag(k) + 1) << 3) | 7, preferred in that order on equal length; nullopt: neither has a
+// code (7 and the f64 of the quantized value follow). Quantizing the value it stores gives the
+// same choice, so quantizing a quantized file changes nothing.
+Writer::QuantizedChoice Writer::choose_quantized(double v) const {
+  double q = v;
+  std::optional<std::uint64_t> tagged;
+  if (std::isfinite(v)) {
+    const double k = std::nearbyint(std::ldexp(v, -exponent_));
+    if (std::fabs(k) <= double(kMaxQuantumMultiple)) {
+      q = std::ldexp(k, exponent_);
+      tagged = ((zigzag(std::int64_t(k)) + 1) << 3) | 7;
+    }
+  }
+  QuantizedChoice best{std::nullopt, q};
+  auto consider = [&](std::optional<std::uint64_t> code, double value) {
+    if (code && (!best.code || varint_length(*code) < varint_length(*best.code))) {
+      best = {code, value};
+    }
+  };
+  consider(decimal_code(v), v);
+  consider(decimal_code(q), q);
+  consider(tagged, q);
+  return best;
+}
+
+void Writer::real(double v) {
+  if (!quantized_ && !decimal_) {  // version 1, exact
+    f64(v);
+    return;
+  }
+  if (!quantized_) {  // version 2, exact: a decimal, or 7 and the f64
+    if (const std::optional<std::uint64_t> d = decimal_code(v)) {
+      varint(*d);
+    } else {
+      varint(7);
+      f64(v);
+    }
+    return;
+  }
+  if (!decimal_) {  // version 1, quantized: the multiple, or 1 and the f64
+    const double k = std::isfinite(v) ? std::nearbyint(std::ldexp(v, -exponent_)) : 0;
+    if (std::isfinite(v) && std::fabs(k) <= double(kMaxQuantumMultiple)) {
+      varint(zigzag(std::int64_t(k)) << 1);
+    } else {
+      varint(1);
+      f64(v);
+    }
+    return;
+  }
+  const QuantizedChoice c = choose_quantized(v);
+  if (c.code) {
+    varint(*c.code);
+  } else {
+    varint(7);
+    f64(c.value);
+  }
+}
+
+double Writer::stored_real(double v) const {
+  if (!quantized_ || !std::isfinite(v)) return v;
+  if (decimal_) return choose_quantized(v).value;
+  const double k = std::nearbyint(std::ldexp(v, -exponent_));
+  return std::fabs(k) <= double(kMaxQuantumMultiple) ? std::ldexp(k, exponent_) : v;
 }
 
 void Writer::f64(double v) {
@@ -163,44 +256,61 @@ double Reader::f64(const char* field) {
   return v;
 }
 
+double Reader::decimal_real(std::uint64_t u, std::size_t at) {
+  const int d = int(u & 7);
+  if (d == 7) {
+    if (u != 7) fail_at(at, "expected a decimal number or the escape 7");
+    return f64("f64");
+  }
+  const std::int64_t m = unzigzag(u >> 3);
+  if (m >= (std::int64_t(1) << 53) || m <= -(std::int64_t(1) << 53) || (d > 0 && m % 10 == 0)) {
+    fail_at(at, "expected a decimal number in its shortest form");
+  }
+  return decimal_value(m, d);
+}
+
 double Reader::real(const char* field) {
-  if (!quantized_) return f64(field);
+  if (!quantized_ && !decimal_) return f64(field);
   const std::size_t at = pos_;
   std::vector<TraceEntry>* trace = trace_;
   trace_ = nullptr;  // one trace line for the whole number, below
+  struct Restore {   // the trace comes back on every exit, errors included
+    std::vector<TraceEntry>*& slot;
+    std::vector<TraceEntry>* value;
+    ~Restore() { slot = value; }
+  } restore{trace_, trace};
   const std::uint64_t u = varint(field);
   double v = 0;
-  if (u == 1) {
+  bool full = false;  // an f64 escape
+  if (!quantized_ || (decimal_ && (u & 7) != 7) || (decimal_ && u == 7)) {
+    full = u == 7;
+    v = decimal_real(u, at);
+  } else if (decimal_) {  // version 2, quantized: ((zigzag(k) + 1) << 3) | 7
+    const std::int64_t k = unzigzag((u >> 3) - 1);
+    if (k > kMaxQuantumMultiple || k < -kMaxQuantumMultiple) {
+      fail_at(at, "expected a quantized multiple of at most 2^52");
+    }
+    v = std::ldexp(double(k), exponent_);
+  } else if (u == 1) {
+    full = true;
     v = f64(field);
   } else if (u & 1) {
-    trace_ = trace;
     fail_at(at, "expected a quantized number (even) or the escape 1");
   } else {
     const std::int64_t k = unzigzag(u >> 1);
     if (k > kMaxQuantumMultiple || k < -kMaxQuantumMultiple) {
-      trace_ = trace;
       fail_at(at, "expected a quantized multiple of at most 2^52");
     }
     v = std::ldexp(double(k), exponent_);
   }
   trace_ = trace;
-  if (trace_) note(at, field, number(v) + (u == 1 ? " (exact)" : ""));
+  if (trace_) note(at, field, number(v) + (full ? " (f64)" : ""));
   return v;
 }
 
 std::string Reader::str(const char* field, std::size_t max_len) {
-  const std::size_t at = pos_;
-  const std::uint64_t n = varint(field);
-  if (n > max_len)
-    fail_at(at, std::string("expected ") + field + " of at most " + std::to_string(max_len) +
-                    " bytes, found length " + std::to_string(n));
-  need(std::size_t(n), field);
-  std::string s(data_.substr(pos_, std::size_t(n)));
-  pos_ += std::size_t(n);
-  if (trace_) {
-    trace_->back().size = pos_ - at;
-    trace_->back().value = quoted(s);
-  }
+  std::string s(length_prefixed(field, max_len));
+  if (trace_) trace_->back().value = quoted(s);
   return s;
 }
 
@@ -210,6 +320,31 @@ std::string_view Reader::raw(const char* field, std::size_t n) {
   std::string_view s = data_.substr(pos_, n);
   pos_ += n;
   if (trace_) note(at, field, quoted(s));
+  return s;
+}
+
+std::string_view Reader::blob(const char* field, std::size_t max_len) {
+  const std::string_view s = length_prefixed(field, max_len);
+  if (trace_) {
+    char crc[16];
+    std::snprintf(crc, sizeof crc, "%08x", crc32(s));
+    trace_->back().value = std::to_string(s.size()) + " bytes, CRC-32 " + crc;
+  }
+  return s;
+}
+
+// A varint length of at most max_len, then that many bytes; the trace entry of the length
+// grows to cover them.
+std::string_view Reader::length_prefixed(const char* field, std::size_t max_len) {
+  const std::size_t at = pos_;
+  const std::uint64_t n = varint(field);
+  if (n > max_len)
+    fail_at(at, std::string("expected ") + field + " of at most " + std::to_string(max_len) +
+                    " bytes, found length " + std::to_string(n));
+  need(std::size_t(n), field);
+  std::string_view s = data_.substr(pos_, std::size_t(n));
+  pos_ += std::size_t(n);
+  if (trace_) trace_->back().size = pos_ - at;
   return s;
 }
 

@@ -9,6 +9,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -53,11 +54,24 @@ class Writer {
     quantized_ = true;
     exponent_ = exponent;
   }
+  // Reals of format version 2: a value whose shortest decimal text is m * 10^-d with d <= 6
+  // and |m| < 2^53 is varint(zigzag(m) << 3 | d); any other is varint 7 and the f64. With
+  // quantize(e) too, each real is the shortest of the exact value's decimal code, the quantized
+  // value's, and the multiple k as ((zigzag(k) + 1) << 3) | 7 (choose_quantized).
+  void decimal() { decimal_ = true; }
   void real(double v);
+  // The value real(v) stores, as a reader gets it back (v itself unless quantized).
+  double stored_real(double v) const;
 
  private:
+  struct QuantizedChoice {
+    std::optional<std::uint64_t> code;
+    double value;
+  };
+  QuantizedChoice choose_quantized(double v) const;
+
   std::string out_;
-  bool quantized_ = false;
+  bool quantized_ = false, decimal_ = false;
   int exponent_ = 0;
 };
 
@@ -84,11 +98,15 @@ class Reader {
   double f64(const char* field);
   std::string str(const char* field, std::size_t max_len);
   std::string_view raw(const char* field, std::size_t n);  // n bytes, traced as text
+  // A byte string as Writer::str writes it (varint length, then the bytes) whose contents are
+  // data, not text (an embedded file): traced as its length and CRC-32, not quoted.
+  std::string_view blob(const char* field, std::size_t max_len);
   // A real number as Writer::real writes it (f64 unless quantize(e) was called).
   void quantize(int exponent) {
     quantized_ = true;
     exponent_ = exponent;
   }
+  void decimal() { decimal_ = true; }  // as Writer::decimal
   double real(const char* field);
 
   // A varint that must be <= max (counts, ids, indices): "expected <what> <= max".
@@ -102,6 +120,10 @@ class Reader {
     throw RmbError(offset, expected);
   }
   void heading(const std::string& text);  // a trace line of size 0
+  // Adds what the value just read stands for to its trace line: `kind  0 (tube)`.
+  void explain(const std::string& meaning) {
+    if (trace_ && !trace_->empty()) trace_->back().value += " (" + meaning + ")";
+  }
   bool tracing() const { return trace_ != nullptr; }
   std::size_t pos() const { return pos_; }
   std::size_t left() const { return end_ - pos_; }
@@ -109,6 +131,8 @@ class Reader {
 
  private:
   void need(std::size_t n, const char* field) const;
+  std::string_view length_prefixed(const char* field, std::size_t max_len);
+  double decimal_real(std::uint64_t code, std::size_t at);  // a decimal code, at offset `at`
   void note(std::size_t at, const char* field, std::string value);
   template <typename T>
   T little_endian(const char* field);  // u16/u32: fixed-width little-endian
@@ -116,9 +140,12 @@ class Reader {
   std::string_view data_;
   std::size_t pos_, end_;
   std::vector<TraceEntry>* trace_;
-  bool quantized_ = false;
+  bool quantized_ = false, decimal_ = false;
   int exponent_ = 0;
 };
+
+// The decimal form of Writer::decimal: m * 10^-d as the nearest double (correctly rounded).
+double decimal_value(std::int64_t m, int d);
 
 // Quantum exponents a file may declare: 2^-60 .. 2^20.
 inline constexpr int kMinQuantumExponent = -60, kMaxQuantumExponent = 20;

@@ -69,7 +69,10 @@ TEST_CASE("binary: every quantized real is within the tolerance", "[binary]") {
       o.tolerance = tolerance;
       const std::string lossy = encode_rmb(g, o);
       CHECK((lossy[6] & kRmbQuantized) != 0);
-      CHECK(lossy.size() < exact.size());
+      // Version 2 stores hand-written numbers as short decimals already; a quantized value is
+      // stored as the shorter of its decimal and its multiple, so the file does not grow by
+      // more than the exponent byte and rounding.
+      CHECK(lossy.size() <= exact.size() + exact.size() / 100 + 1);
       const ir::Grammar back = decode_rmb(lossy);
       const std::vector<double> a = reals(g), b = reals(back);
       REQUIRE(a.size() == b.size());

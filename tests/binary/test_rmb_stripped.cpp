@@ -9,6 +9,7 @@
 #include "../compiler/rmb_test_util.h"
 #include "compiler/rmb_codec.h"
 #include "compiler/rmb_decompile.h"
+#include "rejects_damage.h"
 
 using namespace ramus;
 using namespace cli_test;
@@ -89,21 +90,17 @@ TEST_CASE("binary: stripping combines with quantization and zstd", "[binary]") {
   const std::string q = encode_rmb(g, o);
   CHECK(std::uint8_t(q[6]) == (kRmbStripped | kRmbQuantized));
   CHECK(encode_rmb(decode_rmb(q), o) == q);
-  CHECK(q.size() < encode_rmb(g, stripped()).size());
+  // Version 2 already stores hand-written numbers as short decimals: quantizing them gains
+  // nothing and adds the exponent, so the file stays within 1% of the exact one.
+  const std::size_t exact = encode_rmb(g, stripped()).size();
+  CHECK(q.size() <= exact + exact / 100 + 1);
 }
 
 TEST_CASE("binary: a truncated or damaged stripped file is rejected", "[binary]") {
   const ir::Grammar g = test::lower_example("examples/abop/fig1_25.ramus");
   const std::string bytes = encode_rmb(g, stripped());
-  for (std::size_t n = 0; n < bytes.size(); ++n) {
-    INFO(n);
-    CHECK_THROWS_AS(decode_rmb(std::string_view(bytes).substr(0, n)), RmbError);
-  }
-  for (std::size_t i = 0; i < bytes.size(); ++i) {
-    std::string bad = bytes;
-    bad[i] = char(bad[i] ^ 0x41);
-    CHECK_THROWS_AS(decode_rmb(bad), RmbError);
-  }
+  test::check_rejects_truncation_and_damage(bytes,
+                                            [](std::string_view b) { return decode_rmb(b); });
 }
 
 TEST_CASE("binary: a stripped file may not hold locations", "[binary]") {

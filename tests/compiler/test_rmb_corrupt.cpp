@@ -114,6 +114,6 @@ TEST_CASE("rmb: errors name the offset and what was expected", "[rmb]") {
     CHECK(std::string(e.what()).find("byte ") == 0);
   }
   bad = good;
-  bad[4] = 2;  // version 2
-  CHECK_THROWS_WITH(decode_rmb(bad), Catch::Contains("expected format version 1"));
+  bad[4] = 3;  // version 3
+  CHECK_THROWS_WITH(decode_rmb(bad), Catch::Contains("expected format version 1 or 2, found 3"));
 }

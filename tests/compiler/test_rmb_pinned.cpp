@@ -1,8 +1,12 @@
-// Pins format version 1 (docs/binary-format.md): the primitives, and the exact bytes of a tiny
-// grammar. A change here is a format change: bump kRmbVersion and document it.
+// Pins the format (docs/binary-format.md): the primitives, the exact bytes of a tiny grammar in
+// version 2, and that version 1 files still decode. A change here is a format change: bump
+// kRmbVersion and document it.
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstring>
 
 #include "compiler/rmb_codec.h"
+#include "core/rng.h"
 #include "rmb_test_util.h"
 
 using namespace ramus;
@@ -66,9 +70,37 @@ TEST_CASE("rmb: overlong and overflowing varints are rejected", "[rmb]") {
   CHECK(c.varint("n") == ~std::uint64_t(0));
 }
 
+// The hex text back to bytes.
+std::string unhex(const char* text) {
+  std::string out;
+  for (const char* p = text; *p; p += (p[2] == ' ' ? 3 : 2)) {
+    out += char(std::stoi(std::string(p, 2), nullptr, 16));
+    if (!p[2]) break;
+  }
+  return out;
+}
+
 TEST_CASE("rmb: the bytes of a tiny grammar are pinned", "[rmb]") {
   const std::string bytes = encode_rmb(tiny());
-  // 256 bytes: header, table, nine sections, CRC-32.
+  // Version 2: header, table, nine sections, CRC-32. Reals are decimals (angle 90 is a0 0b:
+  // zigzag 180 << 3 | 0 decimals; width_decay 0.707 is b3 58: 707 with 3 decimals), the pool holds
+  // 1 and 2 once each, and every code record is implied by its instructions (one byte: length <<
+  // 1). 161 bytes.
+  const char* kPinned =
+      "52 4d 42 1a 02 00 00 00 09 01 26 10 02 36 11 03 47 01 04 48 18 05 60 0d "
+      "06 6d 05 07 72 26 08 98 01 04 09 9c 01 01 01 74 00 04 00 a0 0b 10 10 b3 "
+      "58 00 00 08 00 10 00 01 01 00 01 01 01 01 01 01 01 01 01 01 01 01 01 00 "
+      "03 00 0c 74 2e 72 61 6d 75 73 3a 33 3a 31 31 08 03 34 3a 33 0a 02 31 33 "
+      "02 00 10 01 20 04 00 00 01 00 00 00 06 02 02 00 06 02 01 00 00 02 00 00 "
+      "00 00 01 01 11 46 28 78 29 20 2d 3e 20 46 28 78 2a 32 29 2b 46 3b 01 00 "
+      "03 00 01 02 02 00 00 00 01 00 01 00 00 e5 59 8d c8";
+  CHECK(bytes.size() == 161);
+  CHECK(hex(bytes) == kPinned);
+  CHECK(test::derive_steps(decode_rmb(bytes), 2) == test::derive_steps(tiny(), 2));
+}
+
+TEST_CASE("rmb: a version 1 file of a tiny grammar still decodes", "[rmb]") {
+  // 256 bytes: header, table, nine sections, CRC-32, as version 1 wrote them.
   const char* kPinned =
       "52 4d 42 1a 01 00 00 00 09 01 2b 46 02 71 11 03 82 01 01 04 83 01 18 05 "
       "9b 01 19 06 b4 01 1d 07 d1 01 26 08 f7 01 04 09 fb 01 01 01 74 00 04 00 "
@@ -81,7 +113,54 @@ TEST_CASE("rmb: the bytes of a tiny grammar are pinned", "[rmb]") {
       "3f 00 00 03 02 03 00 00 00 00 00 00 00 40 00 06 02 01 00 00 02 00 00 00 "
       "00 01 01 11 46 28 78 29 20 2d 3e 20 46 28 78 2a 32 29 2b 46 3b 01 00 03 "
       "00 01 01 02 00 00 00 01 00 01 00 00 93 08 94 fa";
+  const std::string bytes = unhex(kPinned);
   CHECK(bytes.size() == 256);
   CHECK(hex(bytes) == kPinned);
-  CHECK(test::derive_steps(decode_rmb(bytes), 2) == test::derive_steps(tiny(), 2));
+  const ir::Grammar g = decode_rmb(bytes);
+  CHECK(test::derive_steps(g, 2) == test::derive_steps(tiny(), 2));
+  // Re-encoded, it is the version 2 file; asked for version 1, the same bytes again.
+  CHECK(encode_rmb(g) == encode_rmb(tiny()));
+  RmbEncodeOptions v1;
+  v1.version = 1;
+  CHECK(hex(encode_rmb(tiny(), v1)) == kPinned);
+}
+
+TEST_CASE("rmb: decimal reals of version 2 are exact and as short as their text", "[rmb]") {
+  auto bytes_of = [](double v) {
+    rmb::Writer w;
+    w.decimal();
+    w.real(v);
+    return w.data();
+  };
+  CHECK(hex(bytes_of(0)) == "00");
+  CHECK(hex(bytes_of(1)) == "10");
+  CHECK(hex(bytes_of(-1)) == "08");
+  CHECK(hex(bytes_of(0.5)) == "51");                           // 5, one decimal: zigzag 10 << 3 | 1
+  CHECK(hex(bytes_of(137.5)) == "f1 ab 01");                   // 1375, one decimal
+  CHECK(hex(bytes_of(-0.0)) == "07 00 00 00 00 00 00 00 80");  // no decimal: the f64
+  CHECK(hex(bytes_of(1.0 / 3)).substr(0, 3) == "07 ");
+  // Exact for any double: random bits, and random short decimals.
+  ramus::Rng rng(7);
+  for (int i = 0; i < 20000; ++i) {
+    double v = 0;
+    if (i % 2) {
+      const std::uint64_t bits = rng.next_u64();
+      std::memcpy(&v, &bits, sizeof v);
+    } else {
+      v = double(std::int64_t(rng.next_u64() % 2000001) - 1000000) / std::pow(10.0, double(i % 7));
+    }
+    const std::string b = bytes_of(v);
+    rmb::Reader r(b, 0, b.size());
+    r.decimal();
+    const double back = r.real("v");
+    INFO(v);
+    CHECK(std::memcmp(&back, &v, sizeof v) == 0);
+    CHECK(r.at_end());
+    if (i % 2 == 0) CHECK(b.size() <= 4);
+  }
+  // Not the shortest form: 50 with one decimal instead of 5 with none.
+  const std::string longer("\xa1\x06", 2);
+  rmb::Reader r(longer, 0, longer.size());
+  r.decimal();
+  CHECK_THROWS_WITH(r.real("v"), Catch::Contains("shortest form"));
 }

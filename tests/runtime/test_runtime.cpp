@@ -9,7 +9,9 @@
 #include "compiler/grow.h"
 #include "compiler/pipeline.h"
 #include "compiler/rmb_codec.h"
+#include "compiler/rmb_pieces_ast.h"
 #include "core/skeleton.h"
+#include "grammar/loader.h"
 #include "runtime/ramus_runtime.h"
 
 namespace {
@@ -193,4 +195,44 @@ TEST_CASE("C API: a stripped image grows the same skeleton as its source", "[run
   INFO(err);
   REQUIRE(s);
   require_same(grow_source(example, seed), s.get());
+}
+
+TEST_CASE("C API: images with piece sets load, and their grammar grows as without them",
+          "[runtime]") {
+  // The runtime verifies the piece-set section (section 10) and leaves it aside: it grows the
+  // lsystem block; a file of pieces blocks alone has an empty grammar and grows nothing.
+  for (const std::string example : {"pieces/grown.ramus", "pieces/orchard.ramus"}) {
+    INFO(example);
+    ramus::SourceManager sm;
+    ramus::DiagnosticSink diags;
+    const ramus::Program program = ramus::load_program(path_of(example), sm, diags);
+    REQUIRE(!diags.has_errors());
+    const ramus::RmbPieces pieces = ramus::piece_sets_of(program, path_of(example));
+    REQUIRE(pieces.sets.size() == 1);
+    const bool lsystem = example == "pieces/grown.ramus";
+    ramus::SourceManager sm2;
+    ramus::DiagnosticSink diags2;
+    const ramus::ir::Grammar grammar = lsystem
+                                           ? ramus::lower_file(path_of(example), {}, sm2, diags2)
+                                           : ramus::ir::make_grammar("");
+    const std::string bytes = ramus::encode_rmb(grammar, {}, pieces);
+    char err[256] = "unset";
+    GrammarPtr g(ramus_load(bytes.data(), bytes.size(), err, sizeof err), ramus_free_grammar);
+    INFO(err);
+    REQUIRE(g);
+    SkeletonPtr s(ramus_grow(g.get(), -1, ramus_grammar_seed(g.get()), err, sizeof err),
+                  ramus_free_skeleton);
+    REQUIRE(s);
+    if (lsystem) {
+      REQUIRE(ramus_node_count(s.get()) > 0);
+      require_same(grow_source(example, ramus_grammar_seed(g.get())), s.get());
+    } else {
+      CHECK(ramus_node_count(s.get()) == 0);
+    }
+    // Damage inside the section is found by the runtime's decoder too.
+    std::string bad = bytes;
+    bad.resize(bad.size() - 5);
+    CHECK(ramus_load(bad.data(), bad.size(), err, sizeof err) == nullptr);
+    CHECK(std::string(err).find("byte ") == 0);
+  }
 }
