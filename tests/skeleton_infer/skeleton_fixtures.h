@@ -5,8 +5,10 @@
 #include <filesystem>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "compiler/grow.h"
+#include "compiler/infer/skeleton/fidelity.h"
 #include "compiler/pipeline.h"
 #include "core/skeleton.h"
 #include "grammar/diagnostic.h"
@@ -77,6 +79,18 @@ inline std::string formatted(const std::string& text) {
   DiagnosticSink diags;
   const ast::File f = parse(sm, sm.add("x.ramus", text), diags);
   return format_file(f, sm);
+}
+
+// KS distances between the input tree and trees regrown from its grammar over `seeds` seeds.
+inline std::vector<skeleton_infer::MeasureComparison> regrow_and_compare(const Skeleton& input,
+                                                                         const std::string& text,
+                                                                         const std::string& name,
+                                                                         int seeds) {
+  skeleton_infer::Distributions a, b;
+  skeleton_infer::measure(input, a);
+  for (int s = 1; s <= seeds; ++s)
+    skeleton_infer::measure(grow_text(name, text, std::uint64_t(s)), b);
+  return skeleton_infer::compare(a, b);
 }
 
 }  // namespace skeleton_test

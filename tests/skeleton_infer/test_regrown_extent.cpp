@@ -27,15 +27,6 @@ const MeasureComparison& of(const std::vector<MeasureComparison>& c, Measure m) 
   return c.front();
 }
 
-std::vector<MeasureComparison> regrow(const Skeleton& input, const std::string& text,
-                                      const std::string& name, int seeds) {
-  Distributions a, b;
-  measure(input, a);
-  for (int s = 1; s <= seeds; ++s)
-    measure(skeleton_test::grow_text(name, text, std::uint64_t(s)), b);
-  return compare(a, b);
-}
-
 double ratio(const MeasureComparison& m) { return m.mean_b / m.mean_a; }
 
 }  // namespace
@@ -253,7 +244,7 @@ TEST_CASE("regrown extent: a tortuous skeleton regrows its crown, not a wider on
   o.calibration_seeds = 4;
   const InferredGrammar g = infer_grammar(tree, o);
   CHECK(g.tortuosity == Approx(0.5).margin(0.02));
-  const auto c = regrow(tree, g.text, "zigzag_inferred.ramus", 8);
+  const auto c = skeleton_test::regrow_and_compare(tree, g.text, "zigzag_inferred.ramus", 8);
   INFO(g.text);
   INFO("crown extent ratio " << ratio(of(c, Measure::CrownExtent)) << ", total length ratio "
                              << ratio(of(c, Measure::TotalLength)));

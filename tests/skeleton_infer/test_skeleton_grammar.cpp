@@ -14,16 +14,6 @@ using skeleton_test::add_node;
 
 namespace {
 
-// KS distances between the input tree and trees regrown from its grammar over `seeds` seeds.
-std::vector<MeasureComparison> regrow_and_compare(const Skeleton& input, const std::string& text,
-                                                  const std::string& name, int seeds) {
-  Distributions a, b;
-  measure(input, a);
-  for (int s = 1; s <= seeds; ++s)
-    measure(skeleton_test::grow_text(name, text, std::uint64_t(s)), b);
-  return compare(a, b);
-}
-
 double ks_of(const std::vector<MeasureComparison>& c, Measure m) {
   for (const auto& x : c) {
     if (x.measure == m) return x.ks;
@@ -71,7 +61,7 @@ TEST_CASE("grammar: from broadleaf, regrown trees match over several seeds", "[s
     o.source_name = "broadleaf.ramus";
     const InferredGrammar g = infer_grammar(tree, o);
     require_valid_grammar(g, 32);
-    const auto c = regrow_and_compare(tree, g.text, "broadleaf_inferred.ramus", 8);
+    const auto c = skeleton_test::regrow_and_compare(tree, g.text, "broadleaf_inferred.ramus", 8);
     for (const auto& x : c) INFO(measure_name(x.measure) << " KS " << x.ks);
     // Bounds measured with margin (docs/skeleton-inference.md gives the measured values).
     CHECK(ks_of(c, Measure::BranchingAngle) < 0.25);

@@ -21,7 +21,7 @@ const Vec3 kDown{0, 0, -1};
 
 // Axes leaving a trunk at inclinations from 20 to 160 degrees, each internode one segment whose
 // direction is its predecessor's bent by e (one turn per internode) and then turned by a random
-// angle of sd `noise` degrees. Every axis node carries a short stub, so each segment is its own
+// angle of sd `noise` degrees. Every axis node carries a 5 cm side twig, so each segment is its own
 // internode.
 Skeleton bent_axes(double e, double noise, std::uint64_t seed) {
   Skeleton s;
@@ -37,7 +37,7 @@ Skeleton bent_axes(double e, double noise, std::uint64_t seed) {
     for (int k = 0; k < 8; ++k) {
       p += h * 0.5;
       at = add_node(s, p, at, 0.05);
-      // The stub leaves at a right angle, so the next segment continues the axis.
+      // The side twig leaves at a right angle, so the next segment continues the axis.
       const Vec3 side = normalized(cross(h, Vec3{0, 0, 1}), Vec3{1, 0, 0});
       add_node(s, p + side * 0.05, at, 0.01);
       h = bend_towards(h, kDown, e, 1);
@@ -47,7 +47,7 @@ Skeleton bent_axes(double e, double noise, std::uint64_t seed) {
       const double t = rng.normal() * noise * kPi / 180;
       h = normalized(h * std::cos(t) + r * std::sin(t));
     }
-    add_node(s, p + h * 0.5, at, 0.05);  // the tip: the last stub's node forks too
+    add_node(s, p + h * 0.5, at, 0.05);  // the tip: the last side twig's node forks too
     top = add_node(s, s.nodes[top].position + Vec3{0, 0, 0.3}, top, 0.3);
   }
   return s;

@@ -34,25 +34,14 @@ void set_frame(SkeletonNode& n, const Vec3& heading) {
   n.up = cross(n.heading, n.left);
 }
 
-// Median distance to the nearest other kept point over a strided sample.
+// Median distance to the nearest other kept point (bsg::median_spacing over the kept ones).
 double median_spacing(const std::vector<Eigen::Vector3d>& pts,
                       const std::vector<std::uint8_t>& keep) {
   std::vector<std::uint32_t> ids;
   for (std::uint32_t i = 0; i < pts.size(); ++i) {
     if (keep[i]) ids.push_back(i);
   }
-  if (ids.size() < 2) return 0.0;
-  bsg::PointIndex index(pts, ids);
-  std::vector<double> d;
-  const std::size_t stride = std::max<std::size_t>(1, ids.size() / 4000);
-  for (std::size_t i = 0; i < ids.size(); i += stride) {
-    std::uint32_t nn[2];
-    double d2[2];
-    if (index.knn(pts[ids[i]], 2, nn, d2) == 2) d.push_back(std::sqrt(d2[1]));
-  }
-  if (d.empty()) return 0.0;
-  std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(d.size() / 2), d.end());
-  return d[d.size() / 2];
+  return bsg::median_spacing(pts, ids, false);
 }
 
 // One node waiting to grow: its tree, its index there, and the voxels its flood starts from.

@@ -65,4 +65,28 @@ std::size_t PointIndex::knn_within(const Eigen::Vector3d& q, std::size_t k, doub
   return n;
 }
 
+double median_spacing(const std::vector<Eigen::Vector3d>& pts,
+                      const std::vector<std::uint32_t>& ids, bool skip_duplicates) {
+  if (ids.size() < 2) return 0.0;
+  const PointIndex index(pts, ids);
+  std::vector<double> d;
+  const std::size_t stride = std::max<std::size_t>(1, ids.size() / 4000);
+  const std::size_t k = skip_duplicates ? 4 : 2;
+  for (std::size_t i = 0; i < ids.size(); i += stride) {
+    std::uint32_t nn[4];
+    double d2[4];
+    const std::size_t n = index.knn(pts[ids[i]], k, nn, d2);
+    // nn[0] is the point itself (or a duplicate of it).
+    for (std::size_t j = 1; j < n; ++j) {
+      if (!skip_duplicates || d2[j] > 0) {
+        d.push_back(std::sqrt(d2[j]));
+        break;
+      }
+    }
+  }
+  if (d.empty()) return 0.0;
+  std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(d.size() / 2), d.end());
+  return d[d.size() / 2];
+}
+
 }  // namespace ramus::bsg

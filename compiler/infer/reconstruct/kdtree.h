@@ -43,4 +43,10 @@ class PointIndex {
   std::unique_ptr<Tree> tree_;
 };
 
+// Median distance from a point to its nearest other point, over a strided sample of at most
+// about 4000 of pts[ids[i]] (0 when fewer than two points). Duplicated points count with
+// distance 0 unless `skip_duplicates`, which takes the nearest point at a positive distance.
+double median_spacing(const std::vector<Eigen::Vector3d>& pts,
+                      const std::vector<std::uint32_t>& ids, bool skip_duplicates);
+
 }  // namespace ramus::bsg

@@ -28,23 +28,6 @@ double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// Median distance to the nearest other point over a strided sample of the points.
-double median_spacing(const std::vector<Eigen::Vector3d>& pts,
-                      const std::vector<std::uint32_t>& ids) {
-  PointIndex index(pts, ids);
-  std::vector<double> d;
-  const std::size_t stride = std::max<std::size_t>(1, ids.size() / 4000);
-  for (std::size_t i = 0; i < ids.size(); i += stride) {
-    std::uint32_t nn[2];
-    double d2[2];
-    // Duplicates give zero distances; the second neighbour may be one too, which is fine.
-    if (index.knn(pts[ids[i]], 2, nn, d2) == 2) d.push_back(std::sqrt(d2[1]));
-  }
-  if (d.empty()) return 0.0;
-  std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
-  return d[d.size() / 2];
-}
-
 struct Scale {
   double height, voxel;
 };
@@ -67,8 +50,8 @@ Scale choose_scale(const std::vector<Eigen::Vector3d>& pts, const std::vector<st
     // About one point spacing, so that 1-1.3 cm twigs are not merged with their neighbours
     // (docs/reconstruction.md, Accuracy), but never finer than a fraction of the height. Thick
     // branches are brought to one chain by the thickness-adaptive axis projection below.
-    s.voxel =
-        std::max(o.voxel_spacings * median_spacing(pts, ids), s.height * o.voxel_height_floor);
+    s.voxel = std::max(o.voxel_spacings * median_spacing(pts, ids, false),
+                       s.height * o.voxel_height_floor);
   }
   if (!(s.voxel > 0)) s.voxel = std::max(extent, 1.0) * 1e-3;
   return s;

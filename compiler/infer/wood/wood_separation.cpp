@@ -28,28 +28,6 @@ constexpr std::size_t kMaxNeighbours = 40;
 // Cells the mixture is fitted to at most (every k-th cell beyond that).
 constexpr std::size_t kMixtureSamples = 20000;
 
-// Median distance to the nearest other point over a strided sample (duplicates skipped).
-double median_spacing(const std::vector<Eigen::Vector3d>& pts,
-                      const std::vector<std::uint32_t>& ids) {
-  const bsg::PointIndex index(pts, ids);
-  std::vector<double> d;
-  const std::size_t stride = std::max<std::size_t>(1, ids.size() / 4000);
-  for (std::size_t i = 0; i < ids.size(); i += stride) {
-    std::uint32_t nn[4];
-    double d2[4];
-    const std::size_t n = index.knn(pts[ids[i]], 4, nn, d2);
-    for (std::size_t j = 1; j < n; ++j) {
-      if (d2[j] > 0) {
-        d.push_back(std::sqrt(d2[j]));
-        break;
-      }
-    }
-  }
-  if (d.empty()) return 0.0;
-  std::nth_element(d.begin(), d.begin() + d.size() / 2, d.end());
-  return d[d.size() / 2];
-}
-
 // Covariance features of every finite point at radius r, computed on the grid of edge r / 4.
 std::vector<wood::Eigenfeatures> features_at(const std::vector<Eigen::Vector3d>& pts,
                                              const std::vector<std::uint8_t>& finite, double r) {
@@ -172,7 +150,7 @@ WoodSeparation separate_wood(const PointCloud& cloud, const WoodOptions& o) {
     res.notes.push_back("too few points to separate leaves from wood: all kept as wood");
     return res;
   }
-  const double height = hi.z() - lo.z(), spacing = median_spacing(pts, ids);
+  const double height = hi.z() - lo.z(), spacing = bsg::median_spacing(pts, ids, true);
   res.scale = o.scale > 0 ? o.scale : std::max(height / 100, 6 * spacing);
   if (!(res.scale > 0) || !std::isfinite(res.scale)) {
     res.notes.push_back("the points have no extent: all kept as wood");
