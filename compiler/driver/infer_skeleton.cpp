@@ -26,9 +26,10 @@ struct SkeletonInferArgs {
   int calibration_seeds = 4;
   bool no_tropism = false;
   bool no_axis_budget = false;
-  std::string merge;              // "alpha,beta" in degrees; empty: no merging
-  ReconstructChoice reconstruct;  // scans: --reconstruct, --voxel
-  std::string skeleton_out;       // --write-skeleton: the skeleton the grammar is inferred from
+  std::string axis_ends = "auto";  // auto | own | shared
+  std::string merge;               // "alpha,beta" in degrees; empty: no merging
+  ReconstructChoice reconstruct;   // scans: --reconstruct, --voxel
+  std::string skeleton_out;        // --write-skeleton: the skeleton the grammar is inferred from
 };
 
 merge::MergeOptions parse_merge(const std::string& text) {
@@ -88,6 +89,10 @@ int run_skeleton_infer(const InferCommonArgs& common, const SkeletonInferArgs& a
   go.calibration_seeds = a.calibration_seeds;
   go.tropism = !a.no_tropism;
   go.axis_budget = !a.no_axis_budget;
+  using AxisEnds = skeleton_infer::GrammarOptions::AxisEnds;
+  go.axis_ends = a.axis_ends == "own"      ? AxisEnds::own
+                 : a.axis_ends == "shared" ? AxisEnds::shared
+                                           : AxisEnds::automatic;
   go.source_name = std::filesystem::path(common.input).filename().string();
   skeleton_infer::InferredGrammar g;
   try {
@@ -109,9 +114,18 @@ int run_skeleton_infer(const InferCommonArgs& common, const SkeletonInferArgs& a
         "%.2f)\n",
         common.output.c_str(), g.productions, g.alternatives, g.internodes, g.branch_nodes,
         g.derive, g.tortuosity, g.tip_shift, g.tropism.elasticity, g.tropism.pairs, g.tropism.r2);
+    if (go.axis_budget) {
+      std::printf("  axis ends: %s",
+                  g.axis_ends == skeleton_infer::GrammarOptions::AxisEnds::own ? "own" : "shared");
+      if (g.distance_own >= 0)
+        std::printf(" (grown distance to the input: own %.3f, shared %.3f)", g.distance_own,
+                    g.distance_shared);
+      std::printf("\n");
+    }
     for (const auto& grp : g.groups) {
-      std::printf("  order %u%s arity %u: %zu rules -> %zu cluster(s)\n", unsigned(grp.order),
-                  grp.order == a.max_order ? "+" : "", grp.arity, grp.count, grp.clusters.size());
+      std::printf("  order %u%s arity %u%s: %zu rules -> %zu cluster(s)\n", unsigned(grp.order),
+                  grp.order == a.max_order ? "+" : "", grp.arity, grp.last ? " (axis ends)" : "",
+                  grp.count, grp.clusters.size());
     }
   }
   return 0;
@@ -140,6 +154,11 @@ InferRunner add_infer_skeleton_options(CLI::App& cmd, const GlobalOptions& globa
   cmd.add_flag("--no-axis-budget", a->no_axis_budget,
                "skeleton: end axes by a tip hazard per internode instead of a length budget per "
                "axis");
+  cmd.add_option("--axis-ends", a->axis_ends,
+                 "skeleton: how budgeted axes end: own (tips and last branch nodes of their own), "
+                 "shared (one length model for every internode), auto (both grown, the closer "
+                 "to the input kept; default)")
+      ->check(CLI::IsMember({"auto", "own", "shared"}));
   cmd.add_flag("--no-tropism", a->no_tropism,
                "skeleton: do not fit a gravitropism (every internode's turn drawn independently)");
   cmd.add_option("--merge", a->merge,

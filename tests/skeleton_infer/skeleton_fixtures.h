@@ -1,6 +1,7 @@
 // Helpers of the skeleton-inference tests: hand-made skeletons, growing grammar text, temp files.
 #pragma once
 
+#include <catch2/catch.hpp>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -92,5 +93,16 @@ inline std::vector<skeleton_infer::MeasureComparison> regrow_and_compare(const S
     skeleton_infer::measure(grow_text(name, text, std::uint64_t(s)), b);
   return skeleton_infer::compare(a, b);
 }
+
+// The comparison of measure `m` in `c`, and its ratio of means (B over A).
+inline const skeleton_infer::MeasureComparison& of(
+    const std::vector<skeleton_infer::MeasureComparison>& c, skeleton_infer::Measure m) {
+  for (const auto& x : c) {
+    if (x.measure == m) return x;
+  }
+  FAIL("measure missing");
+  return c.front();
+}
+inline double ratio(const skeleton_infer::MeasureComparison& m) { return m.mean_b / m.mean_a; }
 
 }  // namespace skeleton_test

@@ -14,20 +14,12 @@
 using namespace ramus;
 using namespace ramus::skeleton_infer;
 using skeleton_test::add_node;
+using skeleton_test::of;
+using skeleton_test::ratio;
 
 namespace {
 
 constexpr double kPi = 3.14159265358979323846;
-
-const MeasureComparison& of(const std::vector<MeasureComparison>& c, Measure m) {
-  for (const auto& x : c) {
-    if (x.measure == m) return x;
-  }
-  FAIL("measure missing");
-  return c.front();
-}
-
-double ratio(const MeasureComparison& m) { return m.mean_b / m.mean_a; }
 
 }  // namespace
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <limits>
 
 #include "compiler/infer/skeleton/branch_rules.h"
@@ -48,16 +50,23 @@ const char* measure_name(Measure m) {
   return "?";
 }
 
+double to_resolution(double v) {
+  if (!std::isfinite(v) || v == 0) return v;
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.*g", kMeasureDigits, v);  // correctly rounded
+  return std::strtod(buf, nullptr);
+}
+
 void measure(const Skeleton& skeleton, Distributions& into) {
   const BranchRules rules = extract_branch_rules(skeleton);
   for (const Internode& in : rules.internodes) {
-    into[Measure::BranchLength].push_back(in.length);
+    into[Measure::BranchLength].push_back(to_resolution(in.length));
     into[Measure::BranchOrder].push_back(double(in.order));
   }
   for (const ChildRule& c : rules.children) {
-    into[Measure::BranchingAngle].push_back(c.theta);
-    into[Measure::Azimuth].push_back(c.phi);
-    into[Measure::RadiusRatio].push_back(c.b);
+    into[Measure::BranchingAngle].push_back(to_resolution(c.theta));
+    into[Measure::Azimuth].push_back(to_resolution(c.phi));
+    into[Measure::RadiusRatio].push_back(to_resolution(c.b));
   }
   // Per-tree measures: nodes of tree t are the start and end nodes of its internodes.
   const double inf = std::numeric_limits<double>::infinity();
@@ -71,9 +80,9 @@ void measure(const Skeleton& skeleton, Distributions& into) {
         for (int k = 0; k < 3; ++k) lo[k] = std::min(lo[k], p[k]), hi[k] = std::max(hi[k], p[k]);
       }
     }
-    into[Measure::TotalLength].push_back(rules.tree_length[t]);
-    into[Measure::CrownExtent].push_back(std::max(hi.x - lo.x, hi.y - lo.y));
-    into[Measure::Height].push_back(hi.z - lo.z);
+    into[Measure::TotalLength].push_back(to_resolution(rules.tree_length[t]));
+    into[Measure::CrownExtent].push_back(to_resolution(std::max(hi.x - lo.x, hi.y - lo.y)));
+    into[Measure::Height].push_back(to_resolution(hi.z - lo.z));
     ++into.trees;
   }
 }

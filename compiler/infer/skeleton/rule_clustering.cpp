@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <tuple>
 
 #include "core/rng.h"
 
@@ -108,7 +109,9 @@ GroupData group_features(const BranchRules& rules, const RuleGroup& group,
     const Internode& in = rules.internodes[r.internode];
     if (in.parent == kNone) continue;
     const auto order = std::uint16_t(std::min<int>(in.order, options.max_order));
-    if (order == group.order && r.child_count == group.arity) g.members.push_back(r.internode);
+    if (order != group.order || r.child_count != group.arity) continue;
+    if (group.split && ends_axis(rules, r) != group.last) continue;
+    g.members.push_back(r.internode);
   }
   g.dim = group.arity * kFeaturesPerChild;
   const std::size_t n = g.members.size();
@@ -242,44 +245,65 @@ void fit_atoms(Fitted& f, const std::vector<double>& v) {
   }
 }
 
+// The (log parent length, log ratio) pairs of one child slot, all of them and those of the
+// children that branch again (see ClusterOptions::branching_child_lengths).
+struct LengthRatios {
+  std::vector<double> loglen, a, branching_loglen, branching_a;
+  void add(const BranchRules& rules, std::uint32_t parent, const ChildRule& c) {
+    const double x = std::log(std::max(rules.internodes[parent].length, 1e-9));
+    loglen.push_back(x);
+    a.push_back(safe_log(c.a));
+    if (rules.rules[c.internode].child_count > 0) {
+      branching_loglen.push_back(x);
+      branching_a.push_back(safe_log(c.a));
+    }
+  }
+  Fitted fit(bool branching_only) const {
+    if (branching_only && branching_a.size() >= kMinBranchingLengths)
+      return fit_log_ratio(branching_loglen, branching_a);
+    return fit_log_ratio(loglen, a);
+  }
+};
+
 // The length-ratio regression of the continuation (role 0) or of the laterals (role 1) of
 // `members`, pooled over their clusters and lateral positions: what a cluster child with too
 // few rules for its own regression uses.
 Fitted pooled_length_ratio(const BranchRules& rules, const std::vector<std::uint32_t>& members,
-                           int role) {
-  std::vector<double> a, loglen;
+                           int role, bool branching_only) {
+  LengthRatios ratios;
   for (std::uint32_t m : members) {
     const NodeRule& r = rules.rules[m];
     for (const ChildRule* c = rules.begin(r); c != rules.end(r); ++c) {
-      if ((c == rules.begin(r)) != (role == 0)) continue;
-      a.push_back(safe_log(c->a));
-      loglen.push_back(std::log(std::max(rules.internodes[m].length, 1e-9)));
+      if ((c == rules.begin(r)) == (role == 0)) ratios.add(rules, m, *c);
     }
   }
-  return fit_log_ratio(loglen, a);
+  return ratios.fit(branching_only);
 }
 
 RuleCluster fit_cluster(const BranchRules& rules, const std::vector<std::uint32_t>& members,
-                        std::uint32_t arity, const Fitted* pooled) {
+                        std::uint32_t arity, const Fitted* pooled, bool branching_only) {
   RuleCluster cl;
   cl.count = members.size();
   cl.members = members;
-  std::vector<double> th, ph, a, b, loglen;
-  for (std::uint32_t m : members)
-    loglen.push_back(std::log(std::max(rules.internodes[m].length, 1e-9)));
+  std::vector<double> th, ph, b;
   for (std::uint32_t j = 0; j < arity; ++j) {
-    th.clear(), ph.clear(), a.clear(), b.clear();
+    th.clear(), ph.clear(), b.clear();
+    LengthRatios ratios;
     for (std::uint32_t m : members) {
       const ChildRule& c = rules.begin(rules.rules[m])[j];
       th.push_back(c.theta);
       ph.push_back(c.phi);
-      a.push_back(safe_log(c.a));
+      ratios.add(rules, m, c);
       b.push_back(safe_log(c.b));
     }
     Fitted log_b = fit(b);
     fit_atoms(log_b, b);
-    Fitted log_a = fit_log_ratio(loglen, a);
-    if (members.size() < kMinRegression && pooled != nullptr && pooled[j == 0 ? 0 : 1].regression())
+    Fitted log_a = ratios.fit(branching_only);
+    const std::size_t fitted_on =
+        branching_only && ratios.branching_a.size() >= kMinBranchingLengths
+            ? ratios.branching_a.size()
+            : ratios.a.size();
+    if (fitted_on < kMinRegression && pooled != nullptr && pooled[j == 0 ? 0 : 1].regression())
       log_a = pooled[j == 0 ? 0 : 1];
     cl.children.push_back({fit(th), log_a, log_b, fit_angle(ph)});
   }
@@ -287,16 +311,17 @@ RuleCluster fit_cluster(const BranchRules& rules, const std::vector<std::uint32_
 }
 
 void fit_group(const BranchRules& rules, RuleGroup& group, const GroupData& g,
-               const std::vector<std::uint32_t>& labels, int k) {
+               const std::vector<std::uint32_t>& labels, int k, bool branching_only) {
   group.clusters.clear();
   std::vector<std::vector<std::uint32_t>> members(std::size_t(std::max(k, 1)));
   for (std::size_t i = 0; i < g.members.size(); ++i) {
     members[labels.empty() ? 0 : labels[i]].push_back(g.members[i]);
   }
-  const Fitted pooled[2] = {pooled_length_ratio(rules, g.members, 0),
-                            pooled_length_ratio(rules, g.members, 1)};
+  const Fitted pooled[2] = {pooled_length_ratio(rules, g.members, 0, branching_only),
+                            pooled_length_ratio(rules, g.members, 1, branching_only)};
   for (const auto& m : members) {
-    if (!m.empty()) group.clusters.push_back(fit_cluster(rules, m, group.arity, pooled));
+    if (!m.empty())
+      group.clusters.push_back(fit_cluster(rules, m, group.arity, pooled, branching_only));
   }
   // Most frequent first, so the written grammar reads from the common case down.
   std::stable_sort(group.clusters.begin(), group.clusters.end(),
@@ -434,22 +459,41 @@ void recluster_group(const BranchRules& rules, RuleGroup& group, int k,
   const GroupData g = group_features(rules, group, options);
   double sse = 0;
   const auto labels = kmeans(g.features, g.dim, k, options.seed, sse);
-  fit_group(rules, group, g, labels, k);
+  fit_group(rules, group, g, labels, k, options.branching_child_lengths);
+}
+
+bool ends_axis(const BranchRules& rules, const NodeRule& rule) {
+  return rule.child_count > 0 && rules.rules[rules.begin(rule)->internode].child_count == 0;
 }
 
 std::vector<RuleGroup> cluster_rules(const BranchRules& rules, const ClusterOptions& options) {
-  std::map<std::pair<std::uint16_t, std::uint32_t>, std::size_t> counts;
+  // A group is split by ends_axis only when both parts have kMinSplitRules rules: a rule or two
+  // alone says little about how the axes end, and takes rules from the rest.
+  std::map<std::tuple<std::uint16_t, std::uint32_t, bool>, std::size_t> counts;
   for (const NodeRule& r : rules.rules) {
     if (rules.internodes[r.internode].parent == kNone) continue;
     const auto order =
         std::uint16_t(std::min<int>(rules.internodes[r.internode].order, options.max_order));
-    ++counts[{order, r.child_count}];
+    ++counts[{order, r.child_count, options.split_last && ends_axis(rules, r)}];
+  }
+  for (auto it = counts.begin(); it != counts.end();) {
+    const auto [order, arity, last] = it->first;
+    const auto other = counts.find({order, arity, !last});
+    if (!last || (other != counts.end() && other->second >= kMinSplitRules &&
+                  it->second >= kMinSplitRules)) {
+      ++it;
+      continue;
+    }
+    counts[{order, arity, false}] += it->second;
+    it = counts.erase(it);
   }
   std::vector<RuleGroup> groups;
   for (const auto& [key, count] : counts) {
     RuleGroup group;
-    group.order = key.first;
-    group.arity = key.second;
+    group.order = std::get<0>(key);
+    group.arity = std::get<1>(key);
+    group.last = std::get<2>(key);
+    group.split = counts.count({group.order, group.arity, !group.last}) != 0;
     group.count = count;
     const GroupData g = group_features(rules, group, options);
     const std::size_t n = g.members.size();
@@ -470,7 +514,7 @@ std::vector<RuleGroup> cluster_rules(const BranchRules& rules, const ClusterOpti
       group.silhouette = score;
       if (best_k > 1) labels = kmeans(g.features, g.dim, best_k, options.seed, sse);
     }
-    fit_group(rules, group, g, labels, best_k);
+    fit_group(rules, group, g, labels, best_k, options.branching_child_lengths);
     groups.push_back(std::move(group));
   }
   return groups;

@@ -56,6 +56,8 @@ struct RuleCluster {
 struct RuleGroup {
   std::uint16_t order = 0;
   std::uint32_t arity = 0;
+  bool last = false;   // the axis's last branch node: its continuation is a tip (split_last)
+  bool split = false;  // with split_last, the group of `last` rules stands beside this one
   std::size_t count = 0;
   double silhouette = 0;  // mean silhouette of the chosen clustering (0 when k = 1)
   std::vector<RuleCluster> clusters;
@@ -66,7 +68,19 @@ struct ClusterOptions {
   int max_order = 3;                    // orders >= this are pooled into one group
   std::uint64_t seed = 1;               // k-means++ seeding (ramus::Rng)
   std::size_t selection_sample = 4000;  // k is selected on at most this many rules per group
+  // Fit every child's length ratio on the children that branch again (their rule has children),
+  // when a slot has at least kMinBranchingLengths of them. With axis budgets a tip's length is
+  // what is left of its axis's budget, so the drawn length only matters for internodes that
+  // carry more; pooled with the tips, a tree whose axes end in long shoots (a weeping tree's
+  // whips, 5 times their parent) would draw its inner internodes far too long.
+  bool branching_child_lengths = false;
+  // Group the rules of the last branch node of every axis (ends_axis) apart from the others.
+  // A tree's axes often end differently from how they go on: a weeping tree's thin scaffold
+  // apex forks into three whips, a conifer's leader into its last whorl.
+  bool split_last = false;
 };
+inline constexpr std::size_t kMinSplitRules = 5;
+inline constexpr std::size_t kMinBranchingLengths = 3;
 
 // k-means on rows of `data` (n x dim, row-major): k-means++ seeding, Lloyd iterations, the best
 // of a few restarts. Returns the label of every row; `sse` receives the within-cluster sum of
@@ -83,7 +97,11 @@ double kmeans_bic(const std::vector<double>& data, std::size_t dim,
 double silhouette(const std::vector<double>& data, std::size_t dim,
                   const std::vector<std::uint32_t>& labels, int k);
 
-// Groups the rules by (min(order, max_order), arity) and clusters each group. The rules of the
+// True when `rule` branches and its continuation child is a tip.
+bool ends_axis(const BranchRules& rules, const NodeRule& rule);
+
+// Groups the rules by (min(order, max_order), arity, and with split_last ends_axis) and clusters
+// each group. The rules of the
 // internodes that start at a root are left out: the grammar's axiom writes them as observed. Groups
 // are sorted by order, then arity.
 std::vector<RuleGroup> cluster_rules(const BranchRules& rules, const ClusterOptions& options);

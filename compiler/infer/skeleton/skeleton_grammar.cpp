@@ -10,6 +10,7 @@
 
 #include "compiler/derive.h"
 #include "compiler/grow.h"
+#include "compiler/infer/skeleton/fidelity.h"
 #include "compiler/pipeline.h"
 #include "compiler/turtle.h"
 #include "grammar/diagnostic.h"
@@ -29,6 +30,7 @@ struct OrderStats {
   std::size_t internodes = 0, tips = 0;
   std::uint32_t max_axis_index = 0;  // the last internode of every axis is a tip
   std::vector<TipSample> hazard;     // depth, log width, log length and tip of every internode
+  std::vector<double> tip_lengths;   // of the order's tips
 };
 
 // `clamp(normal(m, s), lo, hi)`, or the mean alone when the spread is nil.
@@ -101,8 +103,10 @@ std::string child(const ChildDistribution& d, const LengthRange& range, const st
 
 // `lateral_budget`: the axis budget drawn for a lateral child, empty without axis budgets (the
 // module then has no parameter r); the continuation gets what is left of r after this internode.
+// With `tips`, the cluster is a last branch node (RuleGroup::last): its continuation is the
+// axis's tip and is drawn as one, of the length left, kept within the observed tip lengths.
 std::string alternative(const RuleCluster& c, const LengthRange& range, double kink,
-                        const std::string& lateral_budget) {
+                        const std::string& lateral_budget, const LengthRange* tips = nullptr) {
   const bool budget = !lateral_budget.empty();
   std::string s = "!(w)" + segment(kink, "l");
   for (std::size_t j = 1; j < c.children.size(); ++j) {
@@ -111,9 +115,14 @@ std::string alternative(const RuleCluster& c, const LengthRange& range, double k
                "o + 1, 0, d + 1" + (budget ? ", " + lateral_budget : std::string())) +
          "]";
   }
-  if (!c.children.empty())
-    s += child(c.children[0], range, budget ? "o, i + 1, d + 1, r - l" : "o, i + 1, d + 1");
-  return s;
+  if (c.children.empty()) return s;
+  if (tips != nullptr && budget) {
+    const ChildDistribution& t = c.children[0];
+    return s + turn(t) + "!(w * " + draw_ratio(t.log_b, "w") + ")" +
+           segment(kink, "clamp(r - l, " + grammar_number(tips->min) + ", " +
+                             grammar_number(tips->max) + ")");
+  }
+  return s + child(c.children[0], range, budget ? "o, i + 1, d + 1, r - l" : "o, i + 1, d + 1");
 }
 
 // The draw of a lateral axis's length budget (AxisBudget), its log moved by `shift`.
@@ -123,18 +132,58 @@ std::string budget_draw(const AxisBudget& b, double shift) {
   if (b.cw != 0) mean += " + " + grammar_number(b.cw) + " * log(max(w, 1e-9))";
   if (b.cd != 0) mean += " + " + grammar_number(b.cd) + " * d";
   const std::string lo = grammar_number(b.lo + shift), hi = grammar_number(b.hi + shift);
+  if (b.sd < 1e-6 && b.cl == 0 && b.cw == 0 && b.cd == 0)  // one length: written as it is
+    return grammar_number(std::exp(std::clamp(b.c0 + shift, b.lo + shift, b.hi + shift)));
   if (b.sd < 1e-6) return "exp(clamp(" + mean + ", " + lo + ", " + hi + "))";
   return "exp(clamp(normal(" + mean + ", " + grammar_number(b.sd) + "), " + lo + ", " + hi + "))";
 }
 
-// An internode of length l continues its axis while the budget r (which counts the internode
-// itself) leaves more than half of a next internode of l times `next`: r > l (1 + next / 2), so
-// that the axis ends where the budget is spent to within half an internode. `next` is the lower
+// The draw of a lateral's budget: the mixture of LateralBudget, by one uniform draw. The shift
+// moves only the branching axes: a single internode's length is observed as it is, while how far
+// the axes branch is what the calibration corrects.
+std::string budget_draw(const LateralBudget& b, double shift) {
+  if (b.p_single <= 0) return budget_draw(b.branching, shift);
+  if (b.p_single >= 1) return budget_draw(b.single, 0);
+  return "(uniform(0, 1) < " + grammar_number(b.p_single) + " ? " + budget_draw(b.single, 0) +
+         " : " + budget_draw(b.branching, shift) + ")";
+}
+
+// Where an axis ends. The budget r counts the internode of length l itself; T is the median
+// length of the order's tips. The tip takes what is left of r (the fallback draws F(r)), so an
+// axis is as long as its budget and its last internode as long as the input's tips, which
+// differ from the inner internodes: a weeping tree's axes end in whips 5 times their parent's
+// length, a conifer's in a twig, a pruned scan's in a cut. Each guard sits halfway between the
+// two budgets it tells apart, so that the spread of the drawn lengths tips neither way:
+//  - the internode carries more than a tip when r > l / 2 + T, halfway between r = T (it is
+//    the tip) and r = l + T (one tip follows);
+//  - with the last branch nodes of the axes grouped apart (RuleGroup::last), the other branch
+//    nodes apply when r > (1 + next / 2) l + T, halfway between r = l + T and r = l + next l + T
+//    (another internode of about `next` times l follows, `next` the median ratio of the order's
+//    branching continuations), and the last ones below that.
+std::string carries_guard(double tip) { return " && r > 0.5 * l + " + grammar_number(tip); }
+std::string branching_guard(double next, double tip) {
+  return " && r > " + grammar_number(1 + next / 2) + " * l + " + grammar_number(tip);
+}
+
+// AxisEnds::shared: an internode of length l continues its axis while the budget r leaves more
+// than half of a next internode of l times `next`: r > l (1 + next / 2). `next` is the lower
 // quartile of the order's continuation ratios, not the median: an order whose axes end in a
 // long shoot (a weeping tree's whip, 6 times its parent) has ratios far above 1 in many of its
 // continuations, and a threshold set by them would end its ordinary axes early.
 std::string continue_guard(double next) {
   return " && r > " + grammar_number(1 + next / 2) + " * l";
+}
+
+// The lower quartile of `v` (not empty).
+double lower_quartile(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 4), v.end());
+  return v[v.size() / 4];
+}
+
+// The median of `v` (not empty).
+double median(std::vector<double> v) {
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 2), v.end());
+  return v[v.size() / 2];
 }
 
 // Observed frequencies as decimals with six places that sum to exactly 1 (largest remainder),
@@ -208,9 +257,10 @@ constexpr double kBudgetShiftScale = 10;
 // A calibration growth with more modules than this is taken as far too long.
 constexpr std::uint64_t kMaxCalibrationModules = 20'000'000;
 
-// Mean total length of trees grown from `text` with seeds 1..n.
-double mean_grown_length(const std::string& text, int seeds) {
-  double sum = 0;
+// Grows `text` with seeds 1..n and hands every tree to `use`; false when a growth goes over
+// kMaxCalibrationModules (far too long).
+template <class Use>
+bool grow_seeds(const std::string& text, int seeds, const Use& use) {
   for (int k = 1; k <= seeds; ++k) {
     GrowOptions o;
     o.seed = std::uint64_t(k);
@@ -223,14 +273,22 @@ double mean_grown_length(const std::string& text, int seeds) {
       TurtleOptions t;
       t.seed = g.settings.seed;
       t.steps = g.settings.derive;
-      sum += interpret(g, derive(g, d), t).total_length();
+      use(interpret(g, derive(g, d), t));
     } catch (const DeriveError&) {
-      return std::numeric_limits<double>::infinity();  // over the module limit: far too long
+      return false;
     } catch (const std::exception& e) {
       throw InferError(std::string("internal error: the inferred grammar does not grow: ") +
                        e.what());
     }
   }
+  return true;
+}
+
+// Mean total length of trees grown from `text` with seeds 1..n.
+double mean_grown_length(const std::string& text, int seeds) {
+  double sum = 0;
+  if (!grow_seeds(text, seeds, [&](const Skeleton& s) { sum += s.total_length(); }))
+    return std::numeric_limits<double>::infinity();
   return sum / double(seeds);
 }
 
@@ -430,6 +488,17 @@ AxisBudget fit_axis_budget(const std::vector<BudgetSample>& samples) {
   return best;
 }
 
+LateralBudget fit_lateral_budget(const std::vector<BudgetSample>& samples) {
+  std::vector<BudgetSample> single, branching;
+  for (const BudgetSample& s : samples) (s.single ? single : branching).push_back(s);
+  LateralBudget b;
+  if (samples.empty()) return b;
+  b.p_single = double(single.size()) / double(samples.size());
+  if (!branching.empty()) b.branching = fit_axis_budget(branching);
+  if (!single.empty()) b.single = fit_axis_budget(single);
+  return b;
+}
+
 std::string grammar_number(double v) {
   if (!std::isfinite(v)) return "0";
   if (std::abs(v) < 1e-9) return "0";
@@ -446,15 +515,66 @@ std::string grammar_number(double v) {
   return s;
 }
 
-InferredGrammar infer_grammar(const Skeleton& skeleton, const GrammarOptions& options) {
-  return infer_grammar(extract_branch_rules(skeleton), options);
+double grown_distance(const std::string& text, const Skeleton& skeleton, int seeds) {
+  Distributions input, grown;
+  measure(skeleton, input);
+  if (!grow_seeds(text, seeds, [&](const Skeleton& s) { measure(s, grown); }))
+    return std::numeric_limits<double>::infinity();
+  if (input.trees == 0 || grown.trees == 0) return std::numeric_limits<double>::infinity();
+  double distance = 0;
+  for (const MeasureComparison& c : compare(input, grown)) {
+    switch (c.measure) {
+      case Measure::BranchLength:
+      case Measure::BranchingAngle:
+      case Measure::BranchOrder:
+        distance += c.ks;
+        break;
+      case Measure::TotalLength:
+      case Measure::CrownExtent:
+      case Measure::Height:
+        distance += std::abs(std::log(std::max(c.mean_b, 1e-12) / std::max(c.mean_a, 1e-12)));
+        break;
+      default:
+        break;
+    }
+  }
+  return distance;
 }
 
-InferredGrammar infer_grammar(const BranchRules& extracted, const GrammarOptions& options) {
+InferredGrammar infer_grammar(const Skeleton& skeleton, const GrammarOptions& options) {
+  const BranchRules rules = extract_branch_rules(skeleton);
+  using AxisEnds = GrammarOptions::AxisEnds;
+  if (!options.axis_budget || options.axis_ends != AxisEnds::automatic ||
+      options.calibration_seeds <= 0 || rules.internodes.empty())
+    return infer_grammar(rules, options);
+  // Model selection by simulation: the two ways of ending axes suit different trees (the own
+  // tips fit a tree whose axes end in long shoots, the shared lengths fit sparse scans whose
+  // few tips say little), and what decides is how close the grown trees come to the input.
+  GrammarOptions o = options;
+  o.axis_ends = AxisEnds::own;
+  InferredGrammar own = infer_grammar(rules, o);
+  o.axis_ends = AxisEnds::shared;
+  InferredGrammar shared = infer_grammar(rules, o);
+  const double d_own = grown_distance(own.text, skeleton, options.calibration_seeds);
+  const double d_shared = grown_distance(shared.text, skeleton, options.calibration_seeds);
+  InferredGrammar& best = d_shared < d_own ? shared : own;
+  best.distance_own = d_own;
+  best.distance_shared = d_shared;
+  return std::move(best);
+}
+
+InferredGrammar infer_grammar(const BranchRules& extracted, const GrammarOptions& given) {
+  GrammarOptions options = given;
+  // AxisEnds::own: a tip takes what is left of its budget, and the last branch nodes of the
+  // axes are a production of their own (see carries_guard and branching_guard).
+  const bool own = options.axis_budget && options.axis_ends != GrammarOptions::AxisEnds::shared;
+  options.cluster.branching_child_lengths = own;
+  options.cluster.split_last = own;
   if (extracted.internodes.empty()) {
     throw InferError("the skeleton has no segment (a single node or none): nothing to infer");
   }
   InferredGrammar out;
+  out.axis_ends = own ? GrammarOptions::AxisEnds::own : GrammarOptions::AxisEnds::shared;
   // Tortuosity of the internodes, length-weighted: the kink angle of `segment`.
   double chords = 0, paths = 0;
   for (const Internode& in : extracted.internodes) chords += in.chord, paths += in.length;
@@ -492,6 +612,7 @@ InferredGrammar infer_grammar(const BranchRules& extracted, const GrammarOptions
     ++s.internodes;
     const bool tip = rules.rules[&in - rules.internodes.data()].child_count == 0;
     s.tips += tip ? 1 : 0;
+    if (tip) s.tip_lengths.push_back(in.length);
     s.hazard.push_back({double(in.depth), std::log(std::max(2 * in.radius, kTiny)), tip ? 1.0 : 0.0,
                         std::log(std::max(in.length, kTiny))});
     s.max_axis_index = std::max(s.max_axis_index, in.axis_index);
@@ -565,10 +686,15 @@ InferredGrammar infer_grammar(const BranchRules& extracted, const GrammarOptions
   constexpr std::size_t kMinBudgetAxes = 8;
   const std::size_t n_in = rules.internodes.size();
   std::vector<double> remaining(n_in, 0.0);
-  std::map<std::uint16_t, AxisBudget> budgets;
-  std::map<const RuleCluster*, AxisBudget> cluster_budgets;
-  std::map<std::uint16_t, double> next_ratio;  // lower quartile continuation ratio per order
-  AxisBudget pooled_budget;
+  std::map<std::uint16_t, LateralBudget> budgets;
+  std::map<const RuleCluster*, LateralBudget> cluster_budgets;
+  // The typical tip of an order (carries_guard): the median of the order's tips (the one tip
+  // of a tree's trunk), of all tips for an order without any. The fallback keeps every tip
+  // within the observed lengths.
+  std::map<std::uint16_t, double> typical_tip;
+  std::map<std::uint16_t, double> next_ratio;  // median ratio of the branching continuations
+  LengthRange tip_range{lengths.max, lengths.min};
+  LateralBudget pooled_budget;
   if (options.axis_budget) {
     std::vector<std::uint32_t> next(n_in, kNone);
     for (std::uint32_t i = 0; i < n_in; ++i) {
@@ -593,24 +719,35 @@ InferredGrammar infer_grammar(const BranchRules& extracted, const GrammarOptions
       const Internode& p = rules.internodes[in.parent];
       const BudgetSample b{std::log(std::max(p.length, kTiny)),
                            std::log(std::max(2 * p.radius, kTiny)), double(p.depth),
-                           std::log(std::max(remaining[i], kTiny))};
+                           std::log(std::max(remaining[i], kTiny)),
+                           own && rules.rules[i].child_count == 0};
       samples[std::uint16_t(std::min<int>(in.order, max_order))].push_back(b);
       all.push_back(b);
     }
-    pooled_budget = fit_axis_budget(all);
+    pooled_budget = fit_lateral_budget(all);
+    std::vector<double> all_tips;
+    for (const auto& [order, st] : stats)
+      all_tips.insert(all_tips.end(), st.tip_lengths.begin(), st.tip_lengths.end());
+    for (double t : all_tips)
+      tip_range.min = std::min(tip_range.min, t), tip_range.max = std::max(tip_range.max, t);
     std::map<std::uint16_t, std::vector<double>> ratios;
     for (const Internode& in : rules.internodes) {
       if (!in.continuation || in.parent == kNone) continue;
+      if (own && rules.rules[&in - rules.internodes.data()].child_count == 0) continue;
       const double lp = rules.internodes[in.parent].length;
-      if (!(lp > kTiny) || !(in.length > kTiny)) continue;
-      ratios[std::uint16_t(std::min<int>(in.order, max_order))].push_back(in.length / lp);
+      if (lp > kTiny && in.length > kTiny)
+        ratios[std::uint16_t(std::min<int>(in.order, max_order))].push_back(in.length / lp);
     }
-    for (auto& [order, v] : ratios) {
-      std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(v.size() / 4), v.end());
-      next_ratio[order] = v[v.size() / 4];
+    for (auto& [order, v] : ratios) next_ratio[order] = own ? median(v) : lower_quartile(v);
+    for (const auto& [order, st] : stats) {
+      if (!st.tip_lengths.empty()) {
+        typical_tip[order] = median(st.tip_lengths);
+      } else if (!all_tips.empty()) {
+        typical_tip[order] = median(all_tips);
+      }
     }
     for (const auto& [order, v] : samples)
-      budgets[order] = v.size() >= kMinBudgetAxes ? fit_axis_budget(v) : pooled_budget;
+      budgets[order] = v.size() >= kMinBudgetAxes ? fit_lateral_budget(v) : pooled_budget;
     // Per cluster: the laterals of its rules, when there are enough of them.
     for (const RuleGroup& g : out.groups) {
       for (const RuleCluster& c : g.clusters) {
@@ -623,10 +760,11 @@ InferredGrammar infer_grammar(const BranchRules& extracted, const GrammarOptions
             if (in.continuation) continue;
             v.push_back({std::log(std::max(p.length, kTiny)),
                          std::log(std::max(2 * p.radius, kTiny)), double(p.depth),
-                         std::log(std::max(remaining[ch->internode], kTiny))});
+                         std::log(std::max(remaining[ch->internode], kTiny)),
+                         own && rules.rules[ch->internode].child_count == 0});
           }
         }
-        if (v.size() >= kMinBudgetAxes) cluster_budgets[&c] = fit_axis_budget(v);
+        if (v.size() >= kMinBudgetAxes) cluster_budgets[&c] = fit_lateral_budget(v);
       }
     }
   }
@@ -717,62 +855,84 @@ InferredGrammar infer_grammar(const BranchRules& extracted, const GrammarOptions
         guard = "o >= " + std::to_string(order) + " && o <= " + std::to_string(deepest_order);
       }
       guard += " && i < " + std::to_string(st.max_axis_index);
-      if (options.axis_budget)
-        guard += continue_guard(next_ratio.count(order) != 0 ? next_ratio.at(order) : 1.0);
       text += "  // order " + std::to_string(order) + (order == max_order ? " and above" : "") +
               ": " + std::to_string(st.internodes) + " internodes, longest axis " +
               std::to_string(st.max_axis_index + 1) + "\n";
       const std::string params = options.axis_budget ? "l, w, o, i, d, r" : "l, w, o, i, d";
-      text += "  N(" + params + ") : " + guard + " ->";
-      // Tips by the logistic hazard of depth, log width and log length; branching alternatives
-      // share the rest by their observed frequencies among the branch nodes of the order.
-      std::vector<std::size_t> counts;
+      // Without axis budgets: tips by the logistic hazard of depth, log width and log length;
+      // branching alternatives share the rest by their observed frequencies among the branch
+      // nodes of the order. With them, the budget ends the axes, and the last branch nodes of
+      // the axes (RuleGroup::last) have a production of their own.
       const RuleGroup* tip_group = nullptr;
+      std::vector<const RuleGroup*> going, ending;
       for (const RuleGroup* g : mine) {
         if (g->arity == 0) {
           tip_group = g;
-          continue;
+        } else {
+          (g->last ? ending : going).push_back(g);
         }
-        for (const RuleCluster& c : g->clusters) counts.push_back(c.count);
       }
-      const std::vector<std::string> probs = probabilities(counts);
+      if (options.axis_budget) tip_group = nullptr;
       const TipHazard& h = hazards.at(order);
       std::string z = grammar_number(h.alpha + shift) + " + " + grammar_number(h.beta) + " * d";
       if (h.gamma != 0) z += " + " + grammar_number(h.gamma) + " * log(max(w, 1e-9))";
       if (h.delta != 0) z += " + " + grammar_number(h.delta) + " * log(max(l, 1e-9))";
-      bool first = true;
-      if (options.axis_budget) tip_group = nullptr;  // the budget ends the axes
-      if (tip_group != nullptr) {
-        text += " (1 / (1 + exp(clamp(-(" + z + "), -30, 30)))) !(w)" + segment(kink, "l");
-        first = false;
-        ++out.alternatives;
-      }
-      std::size_t k = 0;
-      for (const RuleGroup* g : mine) {
-        if (g->arity == 0) continue;
-        for (const RuleCluster& c : g->clusters) {
-          text += first ? " " : " | ";
-          const std::string& q = probs[k++];
-          if (tip_group != nullptr) {
-            text += "(" + q + " / (1 + exp(clamp(" + z + ", -30, 30)))) ";
-          } else {
-            text += "(" + q + ") ";
-          }
+      auto production = [&](const std::vector<const RuleGroup*>& groups,
+                            const std::string& budget_guard, bool ends) {
+        text += "  N(" + params + ") : " + guard + budget_guard + " ->";
+        std::vector<std::size_t> counts;
+        for (const RuleGroup* g : groups)
+          for (const RuleCluster& c : g->clusters) counts.push_back(c.count);
+        const std::vector<std::string> probs = probabilities(counts);
+        bool first = true;
+        if (tip_group != nullptr) {
+          text += " (1 / (1 + exp(clamp(-(" + z + "), -30, 30)))) !(w)" + segment(kink, "l");
           first = false;
-          text +=
-              alternative(c, lengths, kink, lateral_budget(c, order, -shift / kBudgetShiftScale));
           ++out.alternatives;
         }
+        std::size_t k = 0;
+        for (const RuleGroup* g : groups) {
+          for (const RuleCluster& c : g->clusters) {
+            text += first ? " " : " | ";
+            const std::string& q = probs[k++];
+            if (tip_group != nullptr) {
+              text += "(" + q + " / (1 + exp(clamp(" + z + ", -30, 30)))) ";
+            } else {
+              text += "(" + q + ") ";
+            }
+            first = false;
+            text +=
+                alternative(c, lengths, kink, lateral_budget(c, order, -shift / kBudgetShiftScale),
+                            ends ? &tip_range : nullptr);
+            ++out.alternatives;
+          }
+        }
+        text += ";\n";
+        ++out.productions;
+      };
+      const double tip = typical_tip.count(order) != 0 ? typical_tip.at(order) : 0.0;
+      const double next = next_ratio.count(order) != 0 ? next_ratio.at(order) : 1.0;
+      if (!going.empty()) {
+        std::string budget_guard;
+        if (options.axis_budget && !own) {
+          budget_guard = continue_guard(next);
+        } else if (options.axis_budget) {
+          budget_guard = ending.empty() ? carries_guard(tip) : branching_guard(next, tip);
+        }
+        production(going, budget_guard, false);
       }
-      text += ";\n";
-      ++out.productions;
+      if (!ending.empty()) production(ending, carries_guard(tip), true);
     }
     text += options.axis_budget ? "  // tips: axes whose budget is spent or past their longest "
                                   "observed length, orders past the deepest\n"
                                 : "  // tips: axes past their longest observed length, orders "
                                   "past the deepest\n";
+    const std::string tip = own && tip_range.min <= tip_range.max
+                                ? "clamp(r, " + grammar_number(tip_range.min) + ", " +
+                                      grammar_number(tip_range.max) + ")"
+                                : std::string("l");
     text += std::string("  N(") + (options.axis_budget ? "l, w, o, i, d, r" : "l, w, o, i, d") +
-            ") -> !(w)" + segment(kink, "l") + ";\n";
+            ") -> !(w)" + segment(kink, tip) + ";\n";
     text += "}\n";
     return text;
   };

@@ -45,6 +45,17 @@ struct GrammarOptions {
   // End every axis when its length budget is spent (AxisBudget below) instead of by the tip
   // hazard of every internode.
   bool axis_budget = true;
+  // How the axes end under budgets. `own`: a tip takes what is left of its budget, the last
+  // branch nodes of the axes are a production of their own, single-internode laterals a budget
+  // of their own (LateralBudget), the drawn lengths those of the internodes that branch again;
+  // guards halfway between the budgets they tell apart (see the .cpp). `shared`: every
+  // internode, the tips included, is drawn from one length model, and an axis ends when its
+  // budget holds less than this internode and half of a next one. `automatic`: both are
+  // written and calibrated, trees are grown from each over calibration_seeds seeds, and the one
+  // closer to the input (select_axis_ends) is kept -- only infer_grammar(Skeleton) can measure
+  // that; from rules alone, and without calibration, automatic means own.
+  enum class AxisEnds { automatic, own, shared };
+  AxisEnds axis_ends = AxisEnds::automatic;
 };
 
 struct InferredGrammar {
@@ -63,6 +74,10 @@ struct InferredGrammar {
   // orders, as written; the fit of each order, for the header comment and the CLI's report.
   ElasticityFit tropism;
   std::vector<ElasticityFit> tropism_by_order;
+  // The model written (own or shared) and, after an automatic choice, the distance of each
+  // candidate's grown trees to the input (GrownDistance; negative when not measured).
+  GrammarOptions::AxisEnds axis_ends = GrammarOptions::AxisEnds::own;
+  double distance_own = -1, distance_shared = -1;
 };
 
 // Thrown when there is nothing to infer from (no segment at all).
@@ -72,10 +87,17 @@ struct InferError : std::runtime_error {
 
 // Writes the grammar for the rules of `skeleton` (all its trees); the axiom starts like the
 // tree with the most internode length. Throws ExtractError (invalid skeleton) or InferError.
+// With AxisEnds::automatic it writes both models and keeps the one of smaller grown_distance.
 InferredGrammar infer_grammar(const Skeleton& skeleton, const GrammarOptions& options);
 
 // The same from rules already extracted.
 InferredGrammar infer_grammar(const BranchRules& rules, const GrammarOptions& options);
+
+// How far the trees grown from `text` with seeds 1..`seeds` are from `skeleton`: the sum of the
+// Kolmogorov-Smirnov distances of branch length, branching angle and branch order (fidelity.h)
+// and of |ln(grown / input)| of the mean total length, crown extent and height. Infinite when
+// a growth exceeds the module limit of the calibration.
+double grown_distance(const std::string& text, const Skeleton& skeleton, int seeds);
 
 // The probability that an internode is a tip, a logistic function of its depth d, the log of
 // its width w and the log of its length l:
@@ -114,8 +136,21 @@ struct AxisBudget {
 struct BudgetSample {
   double log_length = 0, log_width = 0, depth = 0;  // of the internode carrying the lateral
   double log_axis = 0;                              // log of the lateral axis's length
+  bool single = false;  // the axis is one internode, a tip (a whip, a twig, a spur)
 };
 AxisBudget fit_axis_budget(const std::vector<BudgetSample>& samples);
+
+// Laterals are of two kinds: axes of one internode (a tip: a weeping tree's whip, a spur) and
+// axes that branch. Their lengths differ (a whip 3.6 m, a scaffold limb of 5 to 8 m) and so does
+// what a budget does with them (a single internode's length is its budget; a branching axis
+// spends its budget over internodes), so they are fitted apart: with probability p_single a
+// lateral draws the budget of the single ones, else that of the branching ones. One kind alone
+// gives p_single 0 or 1.
+struct LateralBudget {
+  AxisBudget branching, single;
+  double p_single = 0;
+};
+LateralBudget fit_lateral_budget(const std::vector<BudgetSample>& samples);
 
 // A number in the grammar: four significant digits, never an exponent form the reader would
 // misread, "0" for zero.
