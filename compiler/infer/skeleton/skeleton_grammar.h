@@ -4,10 +4,11 @@
 // clusters of rule_clustering.h generalize them. The grammar has one module N(l, w, o, i, d, r):
 // an internode of length l and width w (twice the radius), branch order o, position i along its
 // axis, depth d (internodes from the root) and r the length left to its axis. Per order group
-// there is one stochastic production with one branching alternative per cluster, by their
-// observed frequencies; it applies while the axis budget r holds more than this internode and
-// half of the next (AxisBudget below: every lateral draws its axis's length where it starts),
-// and the fallback tip ends the axis. The finest laterals' budgets are optionally calibrated so
+// there is a stochastic production with one branching alternative per cluster, by their
+// observed frequencies, guarded by the axis budget r (AxisBudget below: every lateral draws its
+// axis's length where it starts), and the fallback tip ends the axis; how the budget ends an
+// axis is GrammarOptions::AxisEnds (own tips and last branch nodes, or one length model for
+// every internode, chosen per input). The finest laterals' budgets are optionally calibrated so
 // that grown trees have the input's total length. Without axis budgets (the module has no r),
 // each production has a tip alternative instead, of the probability of a logistic function of
 // depth (and of the log width and log length, when the BIC prefers them) fitted to the order's
