@@ -3,17 +3,15 @@
 #include <catch2/catch.hpp>
 #include <string>
 
+#include "../skeleton_infer/skeleton_fixtures.h"
 #include "backends/scanner/harness.h"
-#include "compiler/grow.h"
 
 using namespace ramus;
 
 namespace {
 
 Skeleton grow_example(const std::string& name) {
-  SourceManager sources;
-  DiagnosticSink diags;
-  return grow_file(RAMUS_SOURCE_DIR "/examples/trees/" + name + ".ramus", {}, sources, diags);
+  return skeleton_test::grow_example("examples/trees/" + name + ".ramus");
 }
 
 }  // namespace

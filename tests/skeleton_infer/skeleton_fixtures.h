@@ -5,6 +5,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -52,7 +53,10 @@ inline Skeleton grow_text(const std::string& name, const std::string& text, std:
   return grow_file(path, o, sm, diags);
 }
 
-inline Skeleton grow_example(const std::string& relative, std::uint64_t seed) {
+// Grows a grammar of the source tree (path relative to it) with `seed`, by default the
+// grammar's own.
+inline Skeleton grow_example(const std::string& relative,
+                             std::optional<std::uint64_t> seed = std::nullopt) {
   GrowOptions o;
   o.seed = seed;
   SourceManager sm;

@@ -9,8 +9,8 @@
 // Measured on the 1-station leafy broadleaf scan (docs/wood-separation.md): wood precision 0.666,
 // wood recall 0.636; the thresholds below leave a margin.
 
+#include "../skeleton_infer/skeleton_fixtures.h"
 #include "backends/scanner/scanner.h"
-#include "compiler/grow.h"
 #include "compiler/infer/reconstruct.h"
 #include "compiler/infer/wood/wood_separation.h"
 #include "formats/point_cloud_io.h"
@@ -20,9 +20,7 @@ using namespace ramus;
 namespace {
 
 Skeleton grow(const std::string& name) {
-  SourceManager sources;
-  DiagnosticSink diags;
-  return grow_file(RAMUS_SOURCE_DIR "/examples/trees/" + name + ".ramus", {}, sources, diags);
+  return skeleton_test::grow_example("examples/trees/" + name + ".ramus");
 }
 
 // One station (the scanner's default), 5 mm range noise; density 1000 is fast, 3000 is the

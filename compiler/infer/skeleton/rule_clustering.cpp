@@ -258,9 +258,14 @@ struct LengthRatios {
       branching_a.push_back(safe_log(c.a));
     }
   }
+  bool use_branching(bool branching_only) const {
+    return branching_only && branching_a.size() >= kMinBranchingLengths;
+  }
+  std::size_t fitted_count(bool branching_only) const {
+    return use_branching(branching_only) ? branching_a.size() : a.size();
+  }
   Fitted fit(bool branching_only) const {
-    if (branching_only && branching_a.size() >= kMinBranchingLengths)
-      return fit_log_ratio(branching_loglen, branching_a);
+    if (use_branching(branching_only)) return fit_log_ratio(branching_loglen, branching_a);
     return fit_log_ratio(loglen, a);
   }
 };
@@ -299,11 +304,8 @@ RuleCluster fit_cluster(const BranchRules& rules, const std::vector<std::uint32_
     Fitted log_b = fit(b);
     fit_atoms(log_b, b);
     Fitted log_a = ratios.fit(branching_only);
-    const std::size_t fitted_on =
-        branching_only && ratios.branching_a.size() >= kMinBranchingLengths
-            ? ratios.branching_a.size()
-            : ratios.a.size();
-    if (fitted_on < kMinRegression && pooled != nullptr && pooled[j == 0 ? 0 : 1].regression())
+    if (ratios.fitted_count(branching_only) < kMinRegression && pooled != nullptr &&
+        pooled[j == 0 ? 0 : 1].regression())
       log_a = pooled[j == 0 ? 0 : 1];
     cl.children.push_back({fit(th), log_a, log_b, fit_angle(ph)});
   }

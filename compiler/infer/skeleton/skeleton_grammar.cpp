@@ -1,5 +1,6 @@
 #include "compiler/infer/skeleton/skeleton_grammar.h"
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -24,6 +25,17 @@ namespace {
 
 // Widths and lengths are logged as log(max(x, kTiny)), as the grammar writes them.
 constexpr double kTiny = 1e-9;
+
+// Solves the symmetric positive definite system a x = b (normal equations, a Newton step) by
+// Eigen's LDL^T; false when a pivot is not above `min_pivot` or the solution is not finite.
+bool solve_normal_equations(const Eigen::MatrixXd& a, const Eigen::VectorXd& b, double min_pivot,
+                            Eigen::VectorXd& x) {
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(a);
+  if (ldlt.info() != Eigen::Success || !(ldlt.vectorD().cwiseAbs().minCoeff() > min_pivot))
+    return false;
+  x = ldlt.solve(b);
+  return x.allFinite();
+}
 
 // What the grammar needs to know about one order group besides its clusters.
 struct OrderStats {
@@ -359,55 +371,27 @@ TipHazard fit_tip_hazard(const std::vector<TipSample>& samples) {
     tips += samples[k].tip;
   }
   const double mean = std::clamp(tips / double(n), 1e-6, 1 - 1e-6);
-  std::array<double, kDim> c{std::log(mean / (1 - mean)), 0, 0, 0};
+  Eigen::Vector4d c(std::log(mean / (1 - mean)), 0, 0, 0);
   for (int it = 0; it < 200; ++it) {
-    std::array<double, kDim> g{};
-    std::array<std::array<double, kDim + 1>, kDim> m{};  // Hessian | gradient
-    for (std::size_t j = 0; j < kDim; ++j) {
-      g[j] = -kRidge * c[j];
-      m[j][j] = kRidge;
-    }
+    Eigen::Matrix4d hessian = kRidge * Eigen::Matrix4d::Identity();
+    Eigen::Vector4d gradient = -kRidge * c;
     for (std::size_t k = 0; k < n; ++k) {
-      double z = 0;
-      for (std::size_t j = 0; j < kDim; ++j) z += c[j] * x[k][j];
-      const double p = 1 / (1 + std::exp(-std::clamp(z, -40.0, 40.0)));
-      const double r = samples[k].tip - p, w = p * (1 - p);
-      for (std::size_t i = 0; i < kDim; ++i) {
-        g[i] += r * x[k][i];
-        for (std::size_t j = 0; j < kDim; ++j) m[i][j] += w * x[k][i] * x[k][j];
-      }
+      const Eigen::Map<const Eigen::Vector4d> xk(x[k].data());
+      const double p = 1 / (1 + std::exp(-std::clamp(c.dot(xk), -40.0, 40.0)));
+      gradient += (samples[k].tip - p) * xk;
+      hessian += p * (1 - p) * xk * xk.transpose();
     }
-    for (std::size_t j = 0; j < kDim; ++j) m[j][kDim] = g[j];
-    // Gaussian elimination with partial pivoting (the matrix is positive definite).
-    bool ok = true;
-    for (std::size_t col = 0; col < kDim && ok; ++col) {
-      std::size_t piv = col;
-      for (std::size_t r = col + 1; r < kDim; ++r)
-        if (std::abs(m[r][col]) > std::abs(m[piv][col])) piv = r;
-      std::swap(m[col], m[piv]);
-      if (!(std::abs(m[col][col]) > 1e-300)) ok = false;
-      for (std::size_t r = 0; r < kDim && ok; ++r) {
-        if (r == col) continue;
-        const double f = m[r][col] / m[col][col];
-        for (std::size_t j = col; j <= kDim; ++j) m[r][j] -= f * m[col][j];
-      }
-    }
-    if (!ok) break;
-    double step = 0;
-    for (std::size_t j = 0; j < kDim; ++j) {
-      const double d = m[j][kDim] / m[j][j];
-      c[j] += d;
-      step += std::abs(d);
-    }
-    if (!(step >= 1e-10)) break;
+    Eigen::VectorXd step;
+    if (!solve_normal_equations(hessian, gradient, 1e-300, step)) break;
+    c += step;
+    if (!(step.cwiseAbs().sum() >= 1e-10)) break;
   }
   h.beta = scale[1] > 0 ? c[1] / scale[1] : 0;
   h.gamma = scale[2] > 0 ? c[2] / scale[2] : 0;
   h.delta = scale[3] > 0 ? c[3] / scale[3] : 0;
   h.alpha = c[0] - h.beta * centre[1] - h.gamma * centre[2] - h.delta * centre[3];
   for (std::size_t k = 0; k < n; ++k) {
-    double z = 0;
-    for (std::size_t j = 0; j < kDim; ++j) z += c[j] * x[k][j];
+    const double z = c.dot(Eigen::Map<const Eigen::Vector4d>(x[k].data()));
     const double p = std::clamp(1 / (1 + std::exp(-std::clamp(z, -40.0, 40.0))), 1e-12, 1 - 1e-12);
     h.log_likelihood += samples[k].tip > 0.5 ? std::log(p) : std::log(1 - p);
   }
@@ -441,33 +425,24 @@ AxisBudget fit_axis_budget(const std::vector<BudgetSample>& samples) {
     for (std::size_t j = 0; j < kDim; ++j)
       if (mask & (1u << j)) used[k++] = j;
     if (n < k + 3) continue;  // too few axes to fit these terms and judge them
-    // Normal equations (X^T X + ridge) c = X^T y on centred features, Gauss-Jordan.
-    std::array<std::array<double, kDim + 1>, kDim> m{};  // rows 0..k-1, column k: X^T y
+    // Normal equations (X^T X + ridge) c = X^T y on centred features.
+    Eigen::MatrixXd xtx = Eigen::MatrixXd::Zero(Eigen::Index(k), Eigen::Index(k));
+    Eigen::VectorXd xty = Eigen::VectorXd::Zero(Eigen::Index(k));
     for (const BudgetSample& s : samples) {
       const auto x = raw(s);
       for (std::size_t a = 0; a < k; ++a) {
         for (std::size_t b = 0; b < k; ++b)
-          m[a][b] += (x[used[a]] - centre[used[a]]) * (x[used[b]] - centre[used[b]]);
-        m[a][k] += (x[used[a]] - centre[used[a]]) * (s.log_axis - ymean);
+          xtx(Eigen::Index(a), Eigen::Index(b)) +=
+              (x[used[a]] - centre[used[a]]) * (x[used[b]] - centre[used[b]]);
+        xty(Eigen::Index(a)) += (x[used[a]] - centre[used[a]]) * (s.log_axis - ymean);
       }
     }
-    bool ok = true;
-    for (std::size_t a = 0; a < k; ++a) m[a][a] += 1e-9 * (1 + m[a][a]);
-    for (std::size_t col = 0; col < k && ok; ++col) {
-      std::size_t piv = col;
-      for (std::size_t r = col + 1; r < k; ++r)
-        if (std::abs(m[r][col]) > std::abs(m[piv][col])) piv = r;
-      std::swap(m[col], m[piv]);
-      if (!(std::abs(m[col][col]) > 1e-12)) ok = false;
-      for (std::size_t r = 0; r < k && ok; ++r) {
-        if (r == col) continue;
-        const double f = m[r][col] / m[col][col];
-        for (std::size_t j = col; j <= k; ++j) m[r][j] -= f * m[col][j];
-      }
-    }
-    if (!ok) continue;  // a constant feature: the subset without it is tried too
+    xtx.diagonal() += 1e-9 * (Eigen::VectorXd::Ones(Eigen::Index(k)) + xtx.diagonal());
+    Eigen::VectorXd solution;
+    // A singular system (a constant feature): the subset without it is tried too.
+    if (k > 0 && !solve_normal_equations(xtx, xty, 1e-12, solution)) continue;
     std::array<double, kDim> c{};
-    for (std::size_t a = 0; a < k; ++a) c[used[a]] = m[a][k] / m[a][a];
+    for (std::size_t a = 0; a < k; ++a) c[used[a]] = solution(Eigen::Index(a));
     double rss = 0;
     for (const BudgetSample& s : samples) {
       const auto x = raw(s);
@@ -515,9 +490,11 @@ std::string grammar_number(double v) {
   return s;
 }
 
-double grown_distance(const std::string& text, const Skeleton& skeleton, int seeds) {
-  Distributions input, grown;
-  measure(skeleton, input);
+namespace {
+
+// grown_distance against the input's measures, taken once for every candidate.
+double grown_distance(const std::string& text, const Distributions& input, int seeds) {
+  Distributions grown;
   if (!grow_seeds(text, seeds, [&](const Skeleton& s) { measure(s, grown); }))
     return std::numeric_limits<double>::infinity();
   if (input.trees == 0 || grown.trees == 0) return std::numeric_limits<double>::infinity();
@@ -541,6 +518,14 @@ double grown_distance(const std::string& text, const Skeleton& skeleton, int see
   return distance;
 }
 
+}  // namespace
+
+double grown_distance(const std::string& text, const Skeleton& skeleton, int seeds) {
+  Distributions input;
+  measure(skeleton, input);
+  return grown_distance(text, input, seeds);
+}
+
 InferredGrammar infer_grammar(const Skeleton& skeleton, const GrammarOptions& options) {
   const BranchRules rules = extract_branch_rules(skeleton);
   using AxisEnds = GrammarOptions::AxisEnds;
@@ -555,8 +540,10 @@ InferredGrammar infer_grammar(const Skeleton& skeleton, const GrammarOptions& op
   InferredGrammar own = infer_grammar(rules, o);
   o.axis_ends = AxisEnds::shared;
   InferredGrammar shared = infer_grammar(rules, o);
-  const double d_own = grown_distance(own.text, skeleton, options.calibration_seeds);
-  const double d_shared = grown_distance(shared.text, skeleton, options.calibration_seeds);
+  Distributions input;
+  measure(skeleton, input);
+  const double d_own = grown_distance(own.text, input, options.calibration_seeds);
+  const double d_shared = grown_distance(shared.text, input, options.calibration_seeds);
   InferredGrammar& best = d_shared < d_own ? shared : own;
   best.distance_own = d_own;
   best.distance_shared = d_shared;
