@@ -6,16 +6,21 @@ BUILD_DIR ?= build/release
 JOBS ?= $(shell nproc 2>/dev/null || echo 2)
 DEMO ?= examples/trees/broadleaf.ramus
 
-.PHONY: demo test deps build clean
+.PHONY: demo test deps configure build clean
 
 deps:
 	@bash scripts/install-deps.sh
 
-build: deps
+configure: deps
 	@cmake --preset release -S . -B $(BUILD_DIR) >/dev/null
+
+# Everything: the libraries, the ramus executable, the tests and the benchmarks.
+build: configure
 	@cmake --build $(BUILD_DIR) -j $(JOBS)
 
-demo: build
+# The demo needs only the ramus executable and the stage libraries it links.
+demo: configure
+	@cmake --build $(BUILD_DIR) -j $(JOBS) --target ramus
 	@bash scripts/demo.sh $(BUILD_DIR)/ramus $(DEMO)
 
 test: build

@@ -13,11 +13,11 @@
 #include <string>
 
 #include "backends/mesh/tree_mesh.h"
-#include "backends/scanner/harness.h"
 #include "compiler/grow.h"
-#include "compiler/infer/flood/flood_skeleton.h"
-#include "compiler/infer/merge/branch_merge.h"
 #include "formats/point_cloud_io.h"
+#include "infer/flood/flood_skeleton.h"
+#include "infer/merge/branch_merge.h"
+#include "tests/support/harness.h"
 
 using namespace ramus;
 
@@ -51,7 +51,7 @@ void print_row(const char* method, const std::string& path, int stations, std::s
       a.branches_reconstructed, a.branches_truth, seconds);
 }
 
-// The accuracy harness of backends/scanner/harness.h, run for both methods on the same scan.
+// The accuracy harness of tests/support/harness.h, run for both methods on the same scan.
 void accuracy(const std::string& path) {
   const Skeleton truth = grow(path);
   for (int stations : {1, 3}) {

@@ -20,11 +20,11 @@
 #include <string>
 
 #include "backends/mesh/tree_mesh.h"
-#include "backends/scanner/harness.h"
 #include "compiler/grow.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
-#include "tests/compiler/reconstruct_fixtures.h"
+#include "tests/reconstruct/reconstruct_fixtures.h"
+#include "tests/support/harness.h"
 
 using namespace ramus;
 
@@ -83,7 +83,7 @@ std::vector<int> g_stations = {1, 3};  // --stations N: only N stations
 std::string g_dump;  // --dump PREFIX: writes PREFIX<tree>-<stations>.truth.json / .rec.json
 
 void accuracy(const std::string& path, const scanner::HarnessCase& base) {
-  // "synthetic": the thick-branched test tree of tests/compiler/reconstruct_fixtures.h.
+  // "synthetic": the thick-branched test tree of tests/reconstruct/reconstruct_fixtures.h.
   const Skeleton t = path == "synthetic" ? test::synthetic_tree(7, {0, 0, 0}) : grow(path);
   for (int stations : g_stations) {
     scanner::HarnessCase c = base;

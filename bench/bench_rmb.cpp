@@ -9,7 +9,7 @@
 #include <sstream>
 #include <string>
 
-#include "compiler/rmb_codec.h"
+#include "formats/rmb/rmb.h"
 
 int main(int argc, char** argv) {
   if (argc < 2) {

@@ -20,19 +20,19 @@
 #include <string>
 #include <vector>
 
-#include "backends/scanner/harness.h"
 #include "backends/scanner/scanner.h"
 #include "compiler/grow.h"
-#include "compiler/infer/flood/flood_skeleton.h"
-#include "compiler/infer/reconstruct.h"
-#include "compiler/infer/skeleton/branch_rules.h"
-#include "compiler/infer/skeleton/fidelity.h"
-#include "compiler/infer/skeleton/rule_clustering.h"
-#include "compiler/infer/skeleton/skeleton_grammar.h"
 #include "core/rng.h"
 #include "formats/point_cloud_io.h"
 #include "grammar/diagnostic.h"
 #include "grammar/source.h"
+#include "infer/flood/flood_skeleton.h"
+#include "infer/reconstruct.h"
+#include "infer/skeleton/branch_rules.h"
+#include "infer/skeleton/fidelity.h"
+#include "infer/skeleton/rule_clustering.h"
+#include "infer/skeleton/skeleton_grammar.h"
+#include "tests/support/harness.h"
 
 using namespace ramus;
 using namespace ramus::skeleton_infer;

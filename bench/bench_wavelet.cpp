@@ -25,21 +25,21 @@
 #include <string>
 #include <vector>
 
-#include "backends/scanner/harness.h"
 #include "backends/scanner/scanner.h"
 #include "compiler/grow.h"
-#include "compiler/infer/wavelet/alignment.h"
-#include "compiler/infer/wavelet/compression.h"
-#include "compiler/infer/wavelet/dyad_tree.h"
-#include "compiler/infer/wavelet/fidelity.h"
-#include "compiler/infer/wavelet/haar.h"
-#include "compiler/infer/wavelet/infer_grammar.h"
-#include "compiler/infer/wavelet/super_resolution.h"
-#include "compiler/infer/wavelet/voxel_grammar.h"
-#include "compiler/infer/wavelet/voxelize.h"
 #include "formats/point_cloud_io.h"
 #include "grammar/diagnostic.h"
 #include "grammar/source.h"
+#include "infer/wavelet/alignment.h"
+#include "infer/wavelet/compression.h"
+#include "infer/wavelet/dyad_tree.h"
+#include "infer/wavelet/fidelity.h"
+#include "infer/wavelet/haar.h"
+#include "infer/wavelet/infer_grammar.h"
+#include "infer/wavelet/super_resolution.h"
+#include "infer/wavelet/voxel_grammar.h"
+#include "infer/wavelet/voxelize.h"
+#include "tests/support/harness.h"
 
 using namespace ramus;
 using namespace ramus::wavelet;

@@ -11,12 +11,12 @@
 #include <cstring>
 #include <string>
 
-#include "backends/scanner/harness.h"
 #include "backends/scanner/scanner.h"
 #include "compiler/grow.h"
-#include "compiler/infer/reconstruct.h"
-#include "compiler/infer/wood/wood_separation.h"
 #include "formats/point_cloud_io.h"
+#include "infer/reconstruct.h"
+#include "infer/wood/wood_separation.h"
+#include "tests/support/harness.h"
 
 using namespace ramus;
 

@@ -1,13 +1,10 @@
-#include "compiler/driver/build_binary.h"
+#include "cli/build_binary.h"
 
 #include <cstdio>
 #include <filesystem>
 
-#include "compiler/rmb_codec.h"
-#include "compiler/rmb_paths.h"
-#include "compiler/rmb_pieces_ast.h"
-#include "compiler/rmb_voxels.h"
 #include "core/atomic_file.h"
+#include "formats/rmb/rmb.h"
 #include "grammar/check.h"
 #include "grammar/loader.h"
 
@@ -75,7 +72,7 @@ int build_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::st
     lowered = lower_for_cli(a);
     if (!lowered) return 1;
     if (a.steps) lowered->settings.derive = *a.steps;
-    // The same bytes from any working directory and any checkout (compiler/rmb_paths.h).
+    // The same bytes from any working directory and any checkout (formats/rmb/rmb_paths.h).
     make_locations_portable(*lowered, a.file, default_stdlib_dirs());
   }
   const ir::Grammar& g = *lowered;

@@ -1,4 +1,4 @@
-#include "compiler/driver/build_pieces.h"
+#include "cli/build_pieces.h"
 
 #include <algorithm>
 #include <cmath>
@@ -12,8 +12,8 @@
 #include "backends/pieces/output_posed_mesh.h"
 #include "backends/pieces/pieces.h"
 #include "backends/preview/preview.h"
-#include "compiler/driver/defines.h"
-#include "compiler/driver/grow_args.h"
+#include "cli/defines.h"
+#include "cli/grow_args.h"
 #include "compiler/grow.h"
 #include "core/atomic_file.h"
 #include "grammar/check.h"
@@ -74,7 +74,9 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
   SourceManager sources;
   DiagnosticSink diags;
   const Program program = load_program(grow.file, sources, diags);
-  if (!diags.has_errors()) check_program(program, sources, diags);
+  CheckOptions check_options;
+  check_options.defines = grow_options.defines;
+  if (!diags.has_errors()) check_program(program, sources, diags, check_options);
   if (diags.has_errors()) {
     print_diagnostics(sources, diags);
     return 1;
@@ -92,14 +94,13 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
       return 1;
     }
     if (pieces::pieces_block_fits_skeleton(program, a.block)) {
-      SourceManager grow_sources;
-      DiagnosticSink grow_diags;
+      // The program is loaded and checked above; only the lsystem block is lowered and grown.
       Skeleton skeleton;
       try {
-        skeleton = grow_file(grow.file, grow_options, grow_sources, grow_diags);
+        skeleton = grow_checked(program, grow_options, sources, diags);
       } catch (const GrowError& e) {
-        print_diagnostics(grow_sources, grow_diags);
-        if (!grow_diags.has_errors()) throw UserError(e.what());
+        print_diagnostics(sources, diags);
+        if (!diags.has_errors()) throw UserError(e.what());
         return 1;
       }
       pieces::FitOptions fo;

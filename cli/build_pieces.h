@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "compiler/driver/grow_args.h"
+#include "cli/grow_args.h"
 
 namespace ramus::cli {
 

@@ -11,9 +11,9 @@
 #include "backends/mesh/gltf_writer.h"
 #include "backends/mesh/openmesh_writer.h"
 #include "backends/mesh/tree_mesh.h"
-#include "compiler/driver/build_binary.h"
-#include "compiler/driver/build_pieces.h"
-#include "compiler/driver/grow_args.h"
+#include "cli/build_binary.h"
+#include "cli/build_pieces.h"
+#include "cli/grow_args.h"
 
 namespace ramus::cli {
 namespace {

@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "compiler/driver/command.h"
-#include "compiler/driver/defines.h"
+#include "cli/command.h"
+#include "cli/defines.h"
 #include "grammar/check.h"
 #include "grammar/loader.h"
 

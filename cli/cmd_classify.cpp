@@ -9,12 +9,12 @@
 #include <memory>
 #include <string>
 
-#include "compiler/driver/command.h"
-#include "compiler/infer/wood/wood_separation.h"
+#include "cli/command.h"
 #include "core/atomic_file.h"
 #include "core/little_endian.h"
 #include "core/number_text.h"
 #include "formats/point_cloud_io.h"
+#include "infer/wood/wood_separation.h"
 
 namespace ramus::cli {
 namespace {

@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <memory>
 
-#include "compiler/driver/command.h"
-#include "compiler/driver/skeleton_source.h"
-#include "compiler/infer/skeleton/branch_rules.h"
-#include "compiler/infer/skeleton/fidelity.h"
+#include "cli/command.h"
+#include "cli/skeleton_source.h"
+#include "infer/skeleton/branch_rules.h"
+#include "infer/skeleton/fidelity.h"
 
 namespace ramus::cli {
 

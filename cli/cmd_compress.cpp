@@ -8,11 +8,11 @@
 #include <memory>
 #include <string>
 
-#include "compiler/driver/command.h"
-#include "compiler/driver/scan_args.h"
-#include "compiler/infer/wavelet/compression.h"
-#include "compiler/infer/wavelet/haar.h"
-#include "compiler/infer/wavelet/voxelize.h"
+#include "cli/command.h"
+#include "cli/scan_args.h"
+#include "infer/wavelet/compression.h"
+#include "infer/wavelet/haar.h"
+#include "infer/wavelet/voxelize.h"
 
 namespace ramus::cli {
 

@@ -1,6 +1,6 @@
 // ramus decompile FILE.rmb [-o FILE.ramus]
 // Turns a binary grammar back into .ramus text (docs/binary-format.md, Decompiling): verified
-// first like every .rmb, then rebuilt by compiler/rmb_decompile.h. The text is in the canonical
+// first like every .rmb, then rebuilt by formats/rmb/rmb_decompile.h. The text is in the canonical
 // layout (`ramus fmt` leaves it unchanged) and derives the same string for the same seed.
 // Without -o it goes to stdout. The mesh files a piece set embeds (docs/binary-format.md,
 // section 10) are written beside the -o file under their stored names, which the text's
@@ -10,11 +10,10 @@
 #include <memory>
 #include <string>
 
-#include "compiler/driver/command.h"
-#include "compiler/driver/read_file.h"
-#include "compiler/rmb_codec.h"
-#include "compiler/rmb_decompile.h"
+#include "cli/command.h"
+#include "cli/read_file.h"
 #include "core/atomic_file.h"
+#include "formats/rmb/rmb.h"
 
 namespace ramus::cli {
 

@@ -10,9 +10,9 @@
 #include <optional>
 #include <string>
 
+#include "cli/command.h"
+#include "cli/grow_args.h"
 #include "compiler/derive.h"
-#include "compiler/driver/command.h"
-#include "compiler/driver/grow_args.h"
 #include "compiler/turtle.h"
 #include "core/atomic_file.h"
 #include "core/number_text.h"

@@ -6,9 +6,9 @@
 #include <memory>
 #include <string>
 
-#include "compiler/driver/command.h"
-#include "compiler/driver/read_file.h"
-#include "compiler/rmb_codec.h"
+#include "cli/command.h"
+#include "cli/read_file.h"
+#include "formats/rmb/rmb.h"
 
 namespace ramus::cli {
 

@@ -18,16 +18,16 @@
 #include "backends/mesh/gltf_writer.h"
 #include "backends/mesh/openmesh_writer.h"
 #include "backends/mesh/tree_mesh.h"
+#include "cli/command.h"
+#include "cli/scan_args.h"
 #include "compiler/derive.h"
-#include "compiler/driver/command.h"
-#include "compiler/driver/scan_args.h"
-#include "compiler/infer/wavelet/fidelity.h"
-#include "compiler/infer/wavelet/infer_grammar.h"
-#include "compiler/infer/wavelet/super_resolution.h"
-#include "compiler/infer/wavelet/voxelize.h"
 #include "compiler/pipeline.h"
 #include "compiler/turtle.h"
 #include "formats/point_cloud_io.h"
+#include "infer/wavelet/fidelity.h"
+#include "infer/wavelet/infer_grammar.h"
+#include "infer/wavelet/super_resolution.h"
+#include "infer/wavelet/voxelize.h"
 
 namespace ramus::cli {
 

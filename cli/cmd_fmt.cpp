@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/driver/command.h"
+#include "cli/command.h"
 #include "core/atomic_file.h"
 #include "grammar/format.h"
 #include "grammar/parser.h"

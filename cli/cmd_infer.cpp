@@ -3,8 +3,8 @@
 // this file holds the options they share and dispatches on --method.
 #include <memory>
 
-#include "compiler/driver/command.h"
-#include "compiler/driver/infer_methods.h"
+#include "cli/command.h"
+#include "cli/infer_methods.h"
 
 namespace ramus::cli {
 

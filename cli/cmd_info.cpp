@@ -1,7 +1,7 @@
 // ramus info: what this build of ramus contains (version, compiler, formats), for bug reports.
 #include <cstdio>
 
-#include "compiler/driver/command.h"
+#include "cli/command.h"
 
 namespace ramus::cli {
 

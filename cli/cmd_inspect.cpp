@@ -10,7 +10,7 @@
 #include <memory>
 #include <string>
 
-#include "compiler/driver/command.h"
+#include "cli/command.h"
 #include "formats/point_cloud_io.h"
 
 namespace ramus::cli {

@@ -8,7 +8,7 @@
 
 #include "backends/mesh/tree_mesh.h"
 #include "backends/preview/preview.h"
-#include "compiler/driver/grow_args.h"
+#include "cli/grow_args.h"
 
 namespace ramus::cli {
 namespace {

@@ -2,7 +2,7 @@
 // glb|gltf|obj|ply|rmb]
 //                  [-D name=value]... [--system NAME] [--max-modules N]
 // Geometry propagation (Friedman & Stamos 2013, IV-C): K similar but distinct trees from one
-// grammar, tree k grown with its own seed and a perturbed axiom (compiler/infer/wavelet/
+// grammar, tree k grown with its own seed and a perturbed axiom (infer/wavelet/
 // propagate.h). Writes DIR/tree_000.glb ... (meshes through the same pipeline as `ramus build`),
 // or with --format rmb the K perturbed grammars themselves in the binary format.
 #include <algorithm>
@@ -17,15 +17,14 @@
 #include "backends/mesh/gltf_writer.h"
 #include "backends/mesh/openmesh_writer.h"
 #include "backends/mesh/tree_mesh.h"
+#include "cli/grow_args.h"
 #include "compiler/derive.h"
-#include "compiler/driver/grow_args.h"
-#include "compiler/infer/wavelet/propagate.h"
-#include "compiler/rmb_codec.h"
-#include "compiler/rmb_paths.h"
 #include "compiler/turtle.h"
 #include "core/atomic_file.h"
 #include "core/rng.h"
+#include "formats/rmb/rmb.h"
 #include "grammar/loader.h"
+#include "infer/wavelet/propagate.h"
 
 namespace ramus::cli {
 namespace {

@@ -10,13 +10,13 @@
 #include "backends/mesh/gltf_writer.h"
 #include "backends/mesh/openmesh_writer.h"
 #include "backends/mesh/tree_mesh.h"
-#include "compiler/driver/command.h"
-#include "compiler/driver/reconstruct_choice.h"
-#include "compiler/infer/merge/branch_merge.h"
-#include "compiler/infer/merge/merge_angles.h"
-#include "compiler/infer/reconstruct.h"
+#include "cli/command.h"
+#include "cli/reconstruct_choice.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
+#include "infer/merge/branch_merge.h"
+#include "infer/merge/merge_angles.h"
+#include "infer/reconstruct.h"
 
 namespace ramus::cli {
 namespace {

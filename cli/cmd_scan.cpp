@@ -8,7 +8,7 @@
 
 #include "backends/mesh/tree_mesh.h"
 #include "backends/scanner/scanner.h"
-#include "compiler/driver/grow_args.h"
+#include "cli/grow_args.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
 

@@ -10,11 +10,11 @@
 #include <optional>
 #include <string>
 
-#include "compiler/driver/command.h"
-#include "compiler/driver/scan_args.h"
-#include "compiler/infer/wavelet/symmetrize.h"
+#include "cli/command.h"
+#include "cli/scan_args.h"
 #include "core/number_text.h"
 #include "formats/point_cloud_io.h"
+#include "infer/wavelet/symmetrize.h"
 
 namespace ramus::cli {
 namespace {

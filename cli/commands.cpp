@@ -1,5 +1,5 @@
 // The table of subcommands, in the order `ramus --help` lists them.
-#include "compiler/driver/command.h"
+#include "cli/command.h"
 
 namespace ramus::cli {
 

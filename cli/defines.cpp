@@ -1,10 +1,10 @@
-#include "compiler/driver/defines.h"
+#include "cli/defines.h"
 
 #include <cctype>
 #include <charconv>
 #include <cmath>
 
-#include "compiler/driver/command.h"
+#include "cli/command.h"
 #include "grammar/modules.h"
 
 namespace ramus::cli {

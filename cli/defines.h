@@ -9,7 +9,7 @@
 namespace ramus::cli {
 
 // Parses "name=value" (value a finite number, e.g. 0.5, -2, 1e-3). Throws UserError
-// (compiler/driver/command.h) naming the bad text.
+// (cli/command.h) naming the bad text.
 std::pair<std::string, double> parse_define(const std::string& text);
 
 // Parses every entry; a name given twice keeps the last value.

@@ -1,8 +1,8 @@
-#include "compiler/driver/grow_args.h"
+#include "cli/grow_args.h"
 
 #include <cstdio>
 
-#include "compiler/driver/defines.h"
+#include "cli/defines.h"
 #include "compiler/pipeline.h"
 
 namespace ramus::cli {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/driver/command.h"
+#include "cli/command.h"
 #include "compiler/grow.h"
 #include "compiler/ir.h"
 #include "core/skeleton.h"

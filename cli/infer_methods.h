@@ -7,7 +7,7 @@
 #include <functional>
 #include <string>
 
-#include "compiler/driver/command.h"
+#include "cli/command.h"
 
 namespace ramus::cli {
 

@@ -7,12 +7,12 @@
 #include <filesystem>
 #include <memory>
 
-#include "compiler/driver/infer_methods.h"
-#include "compiler/driver/skeleton_source.h"
-#include "compiler/infer/merge/branch_merge.h"
-#include "compiler/infer/skeleton/skeleton_grammar.h"
+#include "cli/infer_methods.h"
+#include "cli/skeleton_source.h"
 #include "core/atomic_file.h"
 #include "formats/skeleton_json.h"
+#include "infer/merge/branch_merge.h"
+#include "infer/skeleton/skeleton_grammar.h"
 
 namespace ramus::cli {
 

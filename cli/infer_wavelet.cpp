@@ -2,7 +2,7 @@
 //     [--offset exact|scaled] [--scanner x,y,z]
 // Friedman & Stamos 2013: one grammar with the voxel grammar (a `voxels` block), the L-rules of
 // the wavelet progression with rule-space selection (an `lsystem` block) and one dyad's tree as
-// the axiom (compiler/infer/wavelet/infer_grammar.h). Prints the compression figures, the rule
+// the axiom (infer/wavelet/infer_grammar.h). Prints the compression figures, the rule
 // counts and the time of each stage.
 #include <cstdio>
 #include <memory>
@@ -10,10 +10,10 @@
 #include <stdexcept>
 #include <string>
 
-#include "compiler/driver/infer_methods.h"
-#include "compiler/driver/scan_args.h"
-#include "compiler/infer/wavelet/infer_grammar.h"
+#include "cli/infer_methods.h"
+#include "cli/scan_args.h"
 #include "core/atomic_file.h"
+#include "infer/wavelet/infer_grammar.h"
 
 namespace ramus::cli {
 

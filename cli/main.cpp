@@ -3,7 +3,7 @@
 #include <exception>
 #include <functional>
 
-#include "compiler/driver/command.h"
+#include "cli/command.h"
 #include "core/atomic_file.h"
 
 int main(int argc, char** argv) {

@@ -1,9 +1,9 @@
-#include "compiler/driver/read_file.h"
+#include "cli/read_file.h"
 
 #include <fstream>
 #include <sstream>
 
-#include "compiler/driver/command.h"
+#include "cli/command.h"
 
 namespace ramus::cli {
 

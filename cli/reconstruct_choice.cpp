@@ -1,6 +1,6 @@
-#include "compiler/driver/reconstruct_choice.h"
+#include "cli/reconstruct_choice.h"
 
-#include "compiler/infer/flood/flood_skeleton.h"
+#include "infer/flood/flood_skeleton.h"
 
 namespace ramus::cli {
 

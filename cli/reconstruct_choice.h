@@ -5,9 +5,9 @@
 
 #include <string>
 
-#include "compiler/driver/command.h"
-#include "compiler/infer/reconstruct.h"
+#include "cli/command.h"
 #include "core/point_cloud.h"
+#include "infer/reconstruct.h"
 
 namespace ramus::cli {
 

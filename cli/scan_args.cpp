@@ -1,9 +1,9 @@
-#include "compiler/driver/scan_args.h"
+#include "cli/scan_args.h"
 
 #include <cstdio>
 #include <sstream>
 
-#include "compiler/driver/command.h"
+#include "cli/command.h"
 #include "formats/point_cloud_io.h"
 
 namespace ramus::cli {

@@ -3,9 +3,9 @@
 
 #include <string>
 
-#include "compiler/infer/wavelet/alignment.h"
 #include "core/point_cloud.h"
 #include "core/vec3.h"
+#include "infer/wavelet/alignment.h"
 
 namespace ramus::cli {
 

@@ -1,14 +1,14 @@
-#include "compiler/driver/skeleton_source.h"
+#include "cli/skeleton_source.h"
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 
-#include "compiler/driver/command.h"
-#include "compiler/driver/grow_args.h"
-#include "compiler/infer/reconstruct.h"
+#include "cli/command.h"
+#include "cli/grow_args.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
+#include "infer/reconstruct.h"
 
 namespace ramus::cli {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/driver/reconstruct_choice.h"
+#include "cli/reconstruct_choice.h"
 #include "core/skeleton.h"
 
 namespace ramus::cli {

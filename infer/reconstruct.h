@@ -8,7 +8,7 @@
 //       and reweighted re-runs of Dijkstra until the forest stops changing;
 //   4.3 radii (Eq. 6 + 7), removal of edges whose generalized cylinders overlap, degree-2
 //       collapse, and leaves synthesized at leaf nodes.
-// The stages live in compiler/infer/reconstruct/; docs/reconstruction.md describes the method
+// The stages live in infer/reconstruct/; docs/reconstruction.md describes the method
 // and its parameters. Several trees in one scan are separated without pre-segmentation.
 #pragma once
 
@@ -17,10 +17,10 @@
 #include <string>
 #include <vector>
 
-#include "compiler/infer/wood/wood_separation.h"
 #include "core/point_cloud.h"
 #include "core/skeleton.h"
 #include "core/vec3.h"
+#include "infer/wood/wood_separation.h"
 
 namespace ramus {
 

@@ -12,9 +12,9 @@
 
 #include "compiler/derive.h"
 #include "compiler/ir.h"
-#include "compiler/rmb_codec.h"
 #include "compiler/turtle.h"
 #include "core/skeleton.h"
+#include "formats/rmb/rmb_codec.h"
 
 struct ramus_grammar {
   ramus::ir::Grammar g;

@@ -1,8 +1,8 @@
 // The embeddable runtime is built without libzstd (docs/runtime.md, size budget): .rmb files
 // with the zstd flag are rejected with a clear error; `ramus build --zstd` files can be turned
 // into plain ones with `ramus build` again without the flag.
-#include "compiler/rmb_zstd.h"
 #include "formats/rmb/rmb_io.h"
+#include "formats/rmb/rmb_zstd.h"
 
 namespace ramus {
 

@@ -14,10 +14,10 @@
 #include <string_view>
 #include <vector>
 
-#include "compiler/infer/wavelet/voxel_grammar.h"
 #include "compiler/ir.h"
-#include "compiler/rmb_pieces.h"
+#include "compiler/voxel_rule.h"
 #include "formats/rmb/rmb_io.h"
+#include "formats/rmb/rmb_pieces.h"
 
 namespace ramus {
 
@@ -40,15 +40,15 @@ enum class RmbSection : std::uint8_t {
   Productions = 7,
   Axiom = 8,
   Ignored = 9,
-  Pieces = 10,      // optional: the piece sets of `pieces` blocks (compiler/rmb_pieces.h)
+  Pieces = 10,      // optional: the piece sets of `pieces` blocks (formats/rmb/rmb_pieces.h)
   VoxelRules = 11,  // optional: the voxel rule tables of `voxels` blocks
 };
 
 // One `voxels` block (docs/language.md) as the voxel rule table section (id 11) stores it:
-// the settings that were written and the rules in block order. A rule is the voxel grammar's
-// (compiler/infer/wavelet/voxel_grammar.h): parent class -> eight child classes, weighted by
-// `count`; the block has no subbands, so `subband` is always kDiagonalSubband (the dyads
-// proper), and `count` 0 means the rule was written without `x weight`.
+// the settings that were written and the rules in block order. A rule (compiler/voxel_rule.h)
+// is parent class -> eight child classes, weighted by `count`; the block has no subbands, so
+// `subband` is always kDiagonalSubband (the dyads proper), and `count` 0 means the rule was
+// written without `x weight`.
 struct RmbVoxelTable {
   std::string name;
   std::optional<std::uint32_t> levels;   // 1..64

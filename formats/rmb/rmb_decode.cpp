@@ -1,13 +1,13 @@
 // Decoder of the .rmb format (docs/binary-format.md). Reads the header and checks the CRC-32
 // before anything else, then the sections in their fixed order, each through a Reader bounded
 // to the section, checking every id and range as it is read; expressions are verified last
-// (compiler/rmb_verify.cpp) once every array they point into is known.
+// (formats/rmb/rmb_verify.cpp) once every array they point into is known.
 #include <set>
 
-#include "compiler/rmb_codec.h"
-#include "compiler/rmb_verify.h"
-#include "compiler/rmb_zstd.h"
 #include "core/number_text.h"
+#include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_verify.h"
+#include "formats/rmb/rmb_zstd.h"
 
 namespace ramus {
 

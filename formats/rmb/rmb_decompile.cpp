@@ -1,13 +1,13 @@
-#include "compiler/rmb_decompile.h"
+#include "formats/rmb/rmb_decompile.h"
 
 #include <cctype>
 #include <cmath>
 #include <map>
 #include <set>
 
-#include "compiler/rmb_pieces_ast.h"
-#include "compiler/rmb_voxels.h"
 #include "core/number_text.h"
+#include "formats/rmb/rmb_pieces_ast.h"
+#include "formats/rmb/rmb_voxels.h"
 #include "grammar/builtins.h"
 #include "grammar/format.h"
 #include "grammar/modules.h"
@@ -22,16 +22,7 @@ ast::Expr make(decltype(ast::Expr::node) node) {
   return e;
 }
 
-// A number as the language writes it: literals have no sign, so -x is unary minus of x.
-ast::Expr number(double v) {
-  if (!std::isfinite(v)) {
-    throw DecompileError("the number " + shortest_text(v) + " has no .ramus spelling");
-  }
-  if (std::signbit(v)) {
-    return make(ast::Unary{ast::UnaryOp::Neg, ast::Box<ast::Expr>(number(-v))});
-  }
-  return make(ast::NumberLit{v, shortest_text(v)});
-}
+ast::Expr number(double v) { return decompiled_number(v); }
 
 ast::Identifier ident(std::string name) { return ast::Identifier{std::move(name), {}}; }
 
@@ -398,8 +389,6 @@ class Decompiler {
 ast::File decompile_to_ast(const ir::Grammar& g) { return Decompiler(g).run(); }
 
 std::string decompile(const ir::Grammar& g) { return format_file(decompile_to_ast(g)); }
-
-ast::Expr decompiled_number(double v) { return number(v); }
 
 std::string decompile(const RmbContents& contents) {
   ast::File file;

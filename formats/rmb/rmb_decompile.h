@@ -14,35 +14,24 @@
 // name then compiles to the same number). Comments and the original layout are gone.
 #pragma once
 
-#include <stdexcept>
 #include <string>
 
 #include "compiler/ir.h"
-#include "compiler/rmb_codec.h"
+#include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_decompiled_number.h"
 #include "grammar/ast.h"
 
 namespace ramus {
 
-// A grammar the language cannot express: a non-finite number, a slot no pattern binds, bytecode
-// that is not in the shapes the expression compiler emits.
-struct DecompileError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
 ast::File decompile_to_ast(const ir::Grammar& g);
-
-// A number as the decompiled text writes it: the shortest text that reads back as the same
-// double, a negative value as unary minus of its magnitude. Throws DecompileError for a value
-// that is not finite.
-ast::Expr decompiled_number(double v);
 
 // The formatted text of decompile_to_ast (grammar/format.h).
 std::string decompile(const ir::Grammar& g);
 
 // A whole .rmb: the lsystem block (none for a file built from pieces blocks alone), its
-// `pieces` blocks (compiler/rmb_pieces_ast.h; an embedded mesh is named by its file name in
+// `pieces` blocks (formats/rmb/rmb_pieces_ast.h; an embedded mesh is named by its file name in
 // contents.pieces.meshes, which the caller writes beside the text), then its `voxels` blocks
-// (compiler/rmb_voxels.h).
+// (formats/rmb/rmb_voxels.h).
 std::string decompile(const RmbContents& contents);
 
 }  // namespace ramus

@@ -7,9 +7,9 @@
 #include <unordered_map>
 #include <utility>
 
-#include "compiler/rmb_codec.h"
-#include "compiler/rmb_verify.h"
-#include "compiler/rmb_zstd.h"
+#include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_verify.h"
+#include "formats/rmb/rmb_zstd.h"
 
 namespace ramus {
 

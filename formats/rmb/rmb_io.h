@@ -3,7 +3,7 @@
 // reader that knows the byte offset of everything it reads. The reader can record a trace
 // (offset, bytes, field, value) from which `ramus dump` prints its annotated listing.
 //
-// The codec that maps ir::Grammar to these bytes lives in compiler/rmb_codec.h: this folder may
+// The codec that maps ir::Grammar to these bytes lives in formats/rmb/rmb_codec.h: this folder may
 // use only core/, so it knows bytes, not grammars.
 #pragma once
 

@@ -1,4 +1,4 @@
-#include "compiler/rmb_paths.h"
+#include "formats/rmb/rmb_paths.h"
 
 #include <filesystem>
 #include <map>

@@ -6,7 +6,7 @@
 //
 // This is the section's data model and its byte codec only; it needs nothing but the standard
 // library and formats/rmb/, so the embeddable runtime verifies the section like every other.
-// The mapping from and to `pieces` blocks is compiler/rmb_pieces_ast.h (grammar front end).
+// The mapping from and to `pieces` blocks is formats/rmb/rmb_pieces_ast.h (grammar front end).
 #pragma once
 
 #include <array>

@@ -1,4 +1,4 @@
-#include "compiler/rmb_pieces_ast.h"
+#include "formats/rmb/rmb_pieces_ast.h"
 
 #include <cmath>
 #include <filesystem>
@@ -7,8 +7,9 @@
 #include <map>
 #include <unordered_map>
 
-#include "compiler/rmb_decompile.h"
 #include "core/number_text.h"
+#include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_decompiled_number.h"
 #include "grammar/const_eval.h"
 #include "grammar/program_constants.h"
 

@@ -1,5 +1,5 @@
 // `pieces` blocks (docs/pieces.md) <-> the piece-set section of an .rmb (section 10,
-// docs/binary-format.md). Kept apart from the section's codec (compiler/rmb_pieces.h) because it
+// docs/binary-format.md). Kept apart from the section's codec (formats/rmb/rmb_pieces.h) because it
 // needs the grammar front end (the AST and constant folding), which the embeddable runtime does
 // not link; and apart from backends/pieces, which builds meshes from a block: this maps the
 // block as written, with its numbers folded, and never builds a piece.
@@ -9,7 +9,7 @@
 #include <utility>
 #include <vector>
 
-#include "compiler/rmb_pieces.h"
+#include "formats/rmb/rmb_pieces.h"
 #include "grammar/ast.h"
 #include "grammar/loader.h"
 

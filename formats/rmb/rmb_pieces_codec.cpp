@@ -4,7 +4,7 @@
 #include <set>
 #include <utility>
 
-#include "compiler/rmb_pieces.h"
+#include "formats/rmb/rmb_pieces.h"
 
 namespace ramus {
 

@@ -1,4 +1,4 @@
-#include "compiler/rmb_verify.h"
+#include "formats/rmb/rmb_verify.h"
 
 #include <algorithm>
 #include <bit>

@@ -1,4 +1,4 @@
-#include "compiler/rmb_voxels.h"
+#include "formats/rmb/rmb_voxels.h"
 
 #include <cmath>
 

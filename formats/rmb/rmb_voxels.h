@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "compiler/ir.h"
-#include "compiler/rmb_codec.h"
+#include "formats/rmb/rmb_codec.h"
 #include "grammar/ast.h"
 
 namespace ramus {

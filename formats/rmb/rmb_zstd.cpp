@@ -1,4 +1,4 @@
-#include "compiler/rmb_zstd.h"
+#include "formats/rmb/rmb_zstd.h"
 
 #include <zstd.h>
 

@@ -1,6 +1,6 @@
 // The optional zstd stage of the .rmb format (docs/binary-format.md, flag bit 1): everything
 // after the 8-byte header and before the CRC-32 -- the section table and the sections -- as one
-// zstd frame. The CLI links libzstd (compiler/rmb_zstd.cpp); the embeddable runtime is built
+// zstd frame. The CLI links libzstd (formats/rmb/rmb_zstd.cpp); the embeddable runtime is built
 // without it (runtime/rmb_zstd_absent.cpp) and rejects such files with a clear error.
 #pragma once
 

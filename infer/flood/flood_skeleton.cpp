@@ -1,17 +1,17 @@
 // flood_reconstruct(): tree bases, voxelization (Alg. 2), and the breadth-first growth of every
 // tree by flooding (Alg. 3), direction splitting and line fitting (Alg. 4), radii (Alg. 5).
-#include "compiler/infer/flood/flood_skeleton.h"
+#include "infer/flood/flood_skeleton.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <deque>
 
-#include "compiler/infer/flood/line_fit.h"
-#include "compiler/infer/flood/voxel_grid.h"
-#include "compiler/infer/reconstruct/bases.h"
-#include "compiler/infer/reconstruct/finite_points.h"
-#include "compiler/infer/reconstruct/kdtree.h"
+#include "infer/flood/line_fit.h"
+#include "infer/flood/voxel_grid.h"
+#include "infer/reconstruct/bases.h"
+#include "infer/reconstruct/finite_points.h"
+#include "infer/reconstruct/kdtree.h"
 
 namespace ramus::flood {
 

@@ -1,5 +1,5 @@
 // Voxel flood-fill skeleton extraction (thesis draft section 4.2, Alg. 2-5): a fast alternative
-// to the BSG reconstruction of compiler/infer/reconstruct.h.
+// to the BSG reconstruction of infer/reconstruct.h.
 //
 //   Alg. 2  voxelization of the cloud (cubic voxels, d cells along the largest extent);
 //   Alg. 3  from the current node, flood the 26 neighbours layer by layer, consuming every voxel
@@ -16,8 +16,8 @@
 
 #include <cstdint>
 
-#include "compiler/infer/reconstruct.h"
 #include "core/point_cloud.h"
+#include "infer/reconstruct.h"
 
 namespace ramus::flood {
 

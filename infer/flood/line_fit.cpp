@@ -1,4 +1,4 @@
-#include "compiler/infer/flood/line_fit.h"
+#include "infer/flood/line_fit.h"
 
 #include <cmath>
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/flood/voxel_grid.h"
+#include "infer/flood/voxel_grid.h"
 
 #include <algorithm>
 #include <cmath>

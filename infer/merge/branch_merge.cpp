@@ -1,7 +1,7 @@
 // Branch merging (thesis draft section 4.3.2): Alg. 6 (vertical merge of nearly collinear chains)
 // and Alg. 7 (horizontal merge of sibling leaf branches) on a mutable child-list view of the
 // skeleton, then compaction back into a Skeleton whose parents precede their children.
-#include "compiler/infer/merge/branch_merge.h"
+#include "infer/merge/branch_merge.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "compiler/infer/merge/merge_angles.h"
+#include "infer/merge/merge_angles.h"
 
 #include <cmath>
 #include <cstdlib>

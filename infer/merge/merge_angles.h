@@ -3,7 +3,7 @@
 
 #include <string_view>
 
-#include "compiler/infer/merge/branch_merge.h"
+#include "infer/merge/branch_merge.h"
 
 namespace ramus::merge {
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/reconstruct/axis_projection.h"
+#include "infer/reconstruct/axis_projection.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -10,7 +10,7 @@
 #include <memory>
 #include <utility>
 
-#include "compiler/infer/reconstruct/kdtree.h"
+#include "infer/reconstruct/kdtree.h"
 
 namespace ramus::bsg {
 

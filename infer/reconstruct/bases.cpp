@@ -1,4 +1,4 @@
-#include "compiler/infer/reconstruct/bases.h"
+#include "infer/reconstruct/bases.h"
 
 #include <algorithm>
 #include <cmath>

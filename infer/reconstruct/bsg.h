@@ -1,4 +1,4 @@
-// Internal types of the reconstruction pipeline (compiler/infer/reconstruct.h is the interface).
+// Internal types of the reconstruction pipeline (infer/reconstruct.h is the interface).
 //
 // The neighbourhood graph lives on voxel-merged points ("vertices"); a Forest is the result of
 // the multi-root Dijkstra over it (4.1); a Bsg is one tree of that forest, re-indexed so that

@@ -1,9 +1,9 @@
-#include "compiler/infer/reconstruct/compare.h"
+#include "infer/reconstruct/compare.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "compiler/infer/reconstruct/kdtree.h"
+#include "infer/reconstruct/kdtree.h"
 
 namespace ramus {
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/reconstruct/finite_points.h"
+#include "infer/reconstruct/finite_points.h"
 
 #include <algorithm>
 #include <string>

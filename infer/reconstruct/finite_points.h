@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "compiler/infer/reconstruct.h"
 #include "core/point_cloud.h"
+#include "infer/reconstruct.h"
 
 namespace ramus::bsg {
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/reconstruct/forest.h"
+#include "infer/reconstruct/forest.h"
 
 #include <functional>
 #include <limits>

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "compiler/infer/reconstruct/bsg.h"
+#include "infer/reconstruct/bsg.h"
 
 namespace ramus::bsg {
 

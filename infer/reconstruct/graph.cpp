@@ -1,4 +1,4 @@
-#include "compiler/infer/reconstruct/graph.h"
+#include "infer/reconstruct/graph.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -8,7 +8,7 @@
 #include <limits>
 #include <numeric>
 
-#include "compiler/infer/reconstruct/kdtree.h"
+#include "infer/reconstruct/kdtree.h"
 
 namespace ramus::bsg {
 

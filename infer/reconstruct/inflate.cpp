@@ -1,12 +1,12 @@
 // Section 4.3 of Livny et al. 2010.
-#include "compiler/infer/reconstruct/inflate.h"
+#include "infer/reconstruct/inflate.h"
 
 #include <algorithm>
 #include <array>
 #include <cmath>
 
-#include "compiler/infer/reconstruct/kdtree.h"
-#include "compiler/infer/reconstruct/refine.h"
+#include "infer/reconstruct/kdtree.h"
+#include "infer/reconstruct/refine.h"
 
 namespace ramus::bsg {
 

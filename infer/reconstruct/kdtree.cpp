@@ -1,6 +1,6 @@
-#include "compiler/infer/reconstruct/kdtree.h"
+#include "infer/reconstruct/kdtree.h"
 
-#include "compiler/infer/reconstruct/bsg.h"
+#include "infer/reconstruct/bsg.h"
 
 namespace ramus::bsg {
 

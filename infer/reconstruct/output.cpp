@@ -1,4 +1,4 @@
-#include "compiler/infer/reconstruct/output.h"
+#include "infer/reconstruct/output.h"
 
 #include <algorithm>
 #include <cmath>

@@ -3,9 +3,9 @@
 
 #include <cstdint>
 
-#include "compiler/infer/reconstruct/bsg.h"
 #include "core/skeleton.h"
 #include "core/vec3.h"
+#include "infer/reconstruct/bsg.h"
 
 namespace ramus::bsg {
 

@@ -5,17 +5,17 @@
 #include <chrono>
 #include <cmath>
 
-#include "compiler/infer/reconstruct.h"
-#include "compiler/infer/reconstruct/axis_projection.h"
-#include "compiler/infer/reconstruct/bases.h"
-#include "compiler/infer/reconstruct/finite_points.h"
-#include "compiler/infer/reconstruct/forest.h"
-#include "compiler/infer/reconstruct/graph.h"
-#include "compiler/infer/reconstruct/inflate.h"
-#include "compiler/infer/reconstruct/kdtree.h"
-#include "compiler/infer/reconstruct/output.h"
-#include "compiler/infer/reconstruct/refine.h"
-#include "compiler/infer/wood/reconstruct_wood.h"
+#include "infer/reconstruct.h"
+#include "infer/reconstruct/axis_projection.h"
+#include "infer/reconstruct/bases.h"
+#include "infer/reconstruct/finite_points.h"
+#include "infer/reconstruct/forest.h"
+#include "infer/reconstruct/graph.h"
+#include "infer/reconstruct/inflate.h"
+#include "infer/reconstruct/kdtree.h"
+#include "infer/reconstruct/output.h"
+#include "infer/reconstruct/refine.h"
+#include "infer/wood/reconstruct_wood.h"
 
 namespace ramus {
 

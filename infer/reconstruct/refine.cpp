@@ -1,13 +1,13 @@
 // Section 4.2 of Livny et al. 2010. Both optimizations are linear least squares over a tree;
 // their normal equations are sparse, symmetric positive definite and tree-structured, so a
 // sparse LDLT with a fill-reducing ordering factors them in linear time.
-#include "compiler/infer/reconstruct/refine.h"
+#include "infer/reconstruct/refine.h"
 
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
 #include <cmath>
 
-#include "compiler/infer/reconstruct/kdtree.h"
+#include "infer/reconstruct/kdtree.h"
 
 namespace ramus::bsg {
 

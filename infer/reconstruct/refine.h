@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 #include <vector>
 
-#include "compiler/infer/reconstruct/bsg.h"
+#include "infer/reconstruct/bsg.h"
 
 namespace ramus::bsg {
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/skeleton/branch_rules.h"
+#include "infer/skeleton/branch_rules.h"
 
 #include <algorithm>
 #include <cmath>

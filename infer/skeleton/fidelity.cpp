@@ -1,4 +1,4 @@
-#include "compiler/infer/skeleton/fidelity.h"
+#include "infer/skeleton/fidelity.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <cstdlib>
 #include <limits>
 
-#include "compiler/infer/skeleton/branch_rules.h"
+#include "infer/skeleton/branch_rules.h"
 
 namespace ramus::skeleton_infer {
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/skeleton/rule_clustering.h"
+#include "infer/skeleton/rule_clustering.h"
 
 #include <algorithm>
 #include <cmath>

@@ -13,7 +13,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "compiler/infer/skeleton/branch_rules.h"
+#include "infer/skeleton/branch_rules.h"
 
 namespace ramus::skeleton_infer {
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/skeleton/tropism_fit.h"
+#include "infer/skeleton/tropism_fit.h"
 
 #include <algorithm>
 #include <cmath>

@@ -18,8 +18,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "compiler/infer/skeleton/branch_rules.h"
 #include "core/vec3.h"
+#include "infer/skeleton/branch_rules.h"
 
 namespace ramus::skeleton_infer {
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/wavelet/alignment.h"
+#include "infer/wavelet/alignment.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "compiler/infer/wavelet/compression.h"
+#include "infer/wavelet/compression.h"
 
 #include <algorithm>
 #include <bit>

@@ -21,7 +21,7 @@
 
 #include <cstddef>
 
-#include "compiler/infer/wavelet/haar.h"
+#include "infer/wavelet/haar.h"
 
 namespace ramus::wavelet {
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/wavelet/dyad_tree.h"
+#include "infer/wavelet/dyad_tree.h"
 
 #include <algorithm>
 #include <cmath>
@@ -6,7 +6,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "compiler/infer/wavelet/emst.h"
+#include "infer/wavelet/emst.h"
 
 namespace ramus::wavelet {
 namespace {

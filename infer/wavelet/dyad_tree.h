@@ -23,9 +23,9 @@
 #include <cstdint>
 #include <vector>
 
-#include "compiler/infer/wavelet/alignment.h"
-#include "compiler/infer/wavelet/haar.h"
 #include "core/skeleton.h"
+#include "infer/wavelet/alignment.h"
+#include "infer/wavelet/haar.h"
 
 namespace ramus::wavelet {
 

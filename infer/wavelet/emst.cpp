@@ -1,7 +1,7 @@
 // Boruvka EMST (see emst.h). References: O. Boruvka (1926); W. March, P. Ram & A. Gray, "Fast
 // Euclidean minimum spanning tree: algorithm, analysis, and applications", KDD 2010 (the
 // component-pruned nearest-neighbour search, here in its single-tree form).
-#include "compiler/infer/wavelet/emst.h"
+#include "infer/wavelet/emst.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,7 +1,7 @@
 // Fidelity of an inferred grammar to its scan (see fidelity.h). Reference: S. Friedman and
 // I. Stamos, "Automatic Procedural Modeling of Tree Structures in Point Clouds Using Wavelets",
 // 3DV 2013 (the sub-voxel claim of the abstract; III-E for the spanning trees compared).
-#include "compiler/infer/wavelet/fidelity.h"
+#include "infer/wavelet/fidelity.h"
 
 #include <Eigen/Core>
 #include <algorithm>
@@ -10,14 +10,14 @@
 #include <stdexcept>
 
 #include "compiler/derive.h"
-#include "compiler/infer/reconstruct/kdtree.h"
-#include "compiler/infer/wavelet/dyad_tree.h"
-#include "compiler/infer/wavelet/haar.h"
-#include "compiler/infer/wavelet/voxelize.h"
 #include "compiler/pipeline.h"
 #include "compiler/turtle.h"
 #include "grammar/diagnostic.h"
 #include "grammar/source.h"
+#include "infer/reconstruct/kdtree.h"
+#include "infer/wavelet/dyad_tree.h"
+#include "infer/wavelet/haar.h"
+#include "infer/wavelet/voxelize.h"
 
 namespace ramus::wavelet {
 namespace {

@@ -19,11 +19,11 @@
 #include <cstddef>
 #include <vector>
 
-#include "compiler/infer/wavelet/alignment.h"
-#include "compiler/infer/wavelet/infer_grammar.h"
-#include "compiler/infer/wavelet/voxel_grid.h"
 #include "core/skeleton.h"
 #include "core/vec3.h"
+#include "infer/wavelet/alignment.h"
+#include "infer/wavelet/infer_grammar.h"
+#include "infer/wavelet/voxel_grid.h"
 
 namespace ramus::wavelet {
 

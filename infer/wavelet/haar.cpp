@@ -1,6 +1,6 @@
 // Haar transform kernels. A 1D step along x works on contiguous lines; along y and z it works on
 // whole x-runs at once (rows of a plane), so that strided axes still stream through memory.
-#include "compiler/infer/wavelet/haar.h"
+#include "infer/wavelet/haar.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

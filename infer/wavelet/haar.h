@@ -23,7 +23,8 @@
 #include <cstddef>
 #include <vector>
 
-#include "compiler/infer/wavelet/voxel_grid.h"
+#include "compiler/voxel_rule.h"  // kDiagonalSubband: details along x, y and z
+#include "infer/wavelet/voxel_grid.h"
 
 namespace ramus::wavelet {
 
@@ -35,8 +36,6 @@ struct CoefficientBlock {
   std::array<std::size_t, 3> size{1, 1, 1};
   std::size_t count() const { return size[0] * size[1] * size[2]; }
 };
-
-inline constexpr int kDiagonalSubband = 7;  // details along x, y and z
 
 struct WaveletPyramid {
   Decomposition decomposition = Decomposition::standard;

@@ -1,6 +1,6 @@
 // The whole wavelet inference of infer_grammar.h: every stage of Friedman & Stamos 2013 section
 // III in order, timed, and the grammar text they produce.
-#include "compiler/infer/wavelet/infer_grammar.h"
+#include "infer/wavelet/infer_grammar.h"
 
 #include <algorithm>
 #include <array>
@@ -11,13 +11,13 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include "compiler/infer/wavelet/dyad_tree.h"
-#include "compiler/infer/wavelet/haar.h"
-#include "compiler/infer/wavelet/voxel_grammar.h"
 #include "grammar/diagnostic.h"
 #include "grammar/format.h"
 #include "grammar/parser.h"
 #include "grammar/source.h"
+#include "infer/wavelet/dyad_tree.h"
+#include "infer/wavelet/haar.h"
+#include "infer/wavelet/voxel_grammar.h"
 
 namespace ramus::wavelet {
 namespace {

@@ -13,11 +13,11 @@
 #include <string>
 #include <vector>
 
-#include "compiler/infer/wavelet/alignment.h"
-#include "compiler/infer/wavelet/compression.h"
-#include "compiler/infer/wavelet/l_rules.h"
-#include "compiler/infer/wavelet/quantizer.h"
-#include "compiler/infer/wavelet/voxelize.h"
+#include "infer/wavelet/alignment.h"
+#include "infer/wavelet/compression.h"
+#include "infer/wavelet/l_rules.h"
+#include "infer/wavelet/quantizer.h"
+#include "infer/wavelet/voxelize.h"
 
 namespace ramus::wavelet {
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/wavelet/l_rules.h"
+#include "infer/wavelet/l_rules.h"
 
 #include <algorithm>
 #include <stdexcept>

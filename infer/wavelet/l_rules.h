@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "compiler/infer/wavelet/dyad_tree.h"
+#include "infer/wavelet/dyad_tree.h"
 
 namespace ramus::wavelet {
 

@@ -1,7 +1,7 @@
 // Axiom perturbation for geometry propagation (see propagate.h). Reference: S. Friedman and
 // I. Stamos, "Automatic Procedural Modeling of Tree Structures in Point Clouds Using Wavelets",
 // 3DV 2013, Sections III-G and IV-C.
-#include "compiler/infer/wavelet/propagate.h"
+#include "infer/wavelet/propagate.h"
 
 #include <cmath>
 #include <stdexcept>

@@ -1,4 +1,4 @@
-#include "compiler/infer/wavelet/quantizer.h"
+#include "infer/wavelet/quantizer.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "compiler/infer/wavelet/super_resolution.h"
+#include "infer/wavelet/super_resolution.h"
 
 #include <stdexcept>
 #include <string>

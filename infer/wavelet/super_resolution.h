@@ -15,8 +15,8 @@
 
 #include <cstdint>
 
-#include "compiler/infer/wavelet/voxel_grammar.h"
-#include "compiler/infer/wavelet/voxel_grid.h"
+#include "infer/wavelet/voxel_grammar.h"
+#include "infer/wavelet/voxel_grid.h"
 
 namespace ramus::wavelet {
 

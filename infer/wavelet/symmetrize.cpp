@@ -1,13 +1,13 @@
 // Symmetrization about the scanner plane (see symmetrize.h). Reference: S. Friedman and
 // I. Stamos, "Automatic Procedural Modeling of Tree Structures in Point Clouds Using Wavelets",
 // 3DV 2013, Section IV-D.
-#include "compiler/infer/wavelet/symmetrize.h"
+#include "infer/wavelet/symmetrize.h"
 
 #include <Eigen/Core>
 #include <algorithm>
 #include <vector>
 
-#include "compiler/infer/reconstruct/kdtree.h"
+#include "infer/reconstruct/kdtree.h"
 
 namespace ramus::wavelet {
 namespace {

@@ -14,9 +14,9 @@
 
 #include <cstddef>
 
-#include "compiler/infer/wavelet/alignment.h"
 #include "core/point_cloud.h"
 #include "core/vec3.h"
+#include "infer/wavelet/alignment.h"
 
 namespace ramus::wavelet {
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/wavelet/voxel_grammar.h"
+#include "infer/wavelet/voxel_grammar.h"
 
 #include <algorithm>
 #include <stdexcept>

@@ -28,18 +28,12 @@
 #include <cstdint>
 #include <vector>
 
-#include "compiler/infer/wavelet/haar.h"
-#include "compiler/infer/wavelet/quantizer.h"
+#include "compiler/voxel_rule.h"
 #include "core/rng.h"
+#include "infer/wavelet/haar.h"
+#include "infer/wavelet/quantizer.h"
 
 namespace ramus::wavelet {
-
-struct VoxelRule {
-  std::uint8_t subband = kDiagonalSubband;  // 1..7, see haar.h
-  std::uint8_t parent = 0;                  // class of the coarse coefficient
-  std::array<std::uint8_t, 8> children{};   // classes of the eight finer coefficients
-  std::uint32_t count = 0;                  // observations: the rule's weight
-};
 
 struct VoxelGrammarOptions {
   int classes = kDefaultClasses;

@@ -1,4 +1,4 @@
-#include "compiler/infer/wavelet/voxel_grid.h"
+#include "infer/wavelet/voxel_grid.h"
 
 #include <string>
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/wavelet/voxelize.h"
+#include "infer/wavelet/voxelize.h"
 
 #include <algorithm>
 #include <cmath>

@@ -9,8 +9,8 @@
 
 #include <string>
 
-#include "compiler/infer/wavelet/alignment.h"
-#include "compiler/infer/wavelet/voxel_grid.h"
+#include "infer/wavelet/alignment.h"
+#include "infer/wavelet/voxel_grid.h"
 
 namespace ramus::wavelet {
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/wood/features.h"
+#include "infer/wood/features.h"
 
 #include <tbb/parallel_for.h>
 
@@ -6,7 +6,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "compiler/infer/reconstruct/kdtree.h"
+#include "infer/reconstruct/kdtree.h"
 
 namespace ramus::wood {
 

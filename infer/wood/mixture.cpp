@@ -1,4 +1,4 @@
-#include "compiler/infer/wood/mixture.h"
+#include "infer/wood/mixture.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "compiler/infer/wood/otsu.h"
+#include "infer/wood/otsu.h"
 
 #include <algorithm>
 

@@ -1,4 +1,4 @@
-#include "compiler/infer/wood/reconstruct_wood.h"
+#include "infer/wood/reconstruct_wood.h"
 
 #include <chrono>
 #include <cstdio>

@@ -2,7 +2,7 @@
 // the pipeline of Livny et al. 2010 runs, which assumes wood points (docs/wood-separation.md).
 #pragma once
 
-#include "compiler/infer/reconstruct.h"
+#include "infer/reconstruct.h"
 
 namespace ramus {
 

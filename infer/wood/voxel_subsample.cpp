@@ -1,4 +1,4 @@
-#include "compiler/infer/wood/voxel_subsample.h"
+#include "infer/wood/voxel_subsample.h"
 
 #include <cmath>
 #include <unordered_map>

@@ -1,5 +1,5 @@
 // separate_wood(): the stages of the separation (wood_separation.h) in order.
-#include "compiler/infer/wood/wood_separation.h"
+#include "infer/wood/wood_separation.h"
 
 #include <tbb/parallel_for.h>
 
@@ -8,11 +8,11 @@
 #include <cmath>
 #include <cstdio>
 
-#include "compiler/infer/reconstruct/kdtree.h"
-#include "compiler/infer/wood/features.h"
-#include "compiler/infer/wood/mixture.h"
-#include "compiler/infer/wood/otsu.h"
-#include "compiler/infer/wood/voxel_subsample.h"
+#include "infer/reconstruct/kdtree.h"
+#include "infer/wood/features.h"
+#include "infer/wood/mixture.h"
+#include "infer/wood/otsu.h"
+#include "infer/wood/voxel_subsample.h"
 
 namespace ramus {
 

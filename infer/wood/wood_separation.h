@@ -3,7 +3,7 @@
 // (its section 6 and Figure 13 show leafy scans failing), so leafy summer scans are separated
 // first: `ramus reconstruct --leaves-in-scan`, `ramus classify` (docs/wood-separation.md).
 //
-// The method (docs/wood-separation.md), one stage per file in compiler/infer/wood/:
+// The method (docs/wood-separation.md), one stage per file in infer/wood/:
 //  1. covariance features (features.h, Demantke et al. 2011): the score of a point is its
 //     planarity at r / 2 times its scattering at 2r, each computed on a grid a quarter of that
 //     scale fine (voxel_subsample.h) -- a leaf card is flat at the scale of a leaf, and the cards

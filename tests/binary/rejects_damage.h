@@ -6,7 +6,7 @@
 #include <string>
 #include <string_view>
 
-#include "compiler/rmb_codec.h"
+#include "formats/rmb/rmb_codec.h"
 
 namespace ramus::test {
 

@@ -1,15 +1,15 @@
-// `decompile` (compiler/rmb_decompile.h): for every example, the text decompiled from its .rmb
+// `decompile` (formats/rmb/rmb_decompile.h): for every example, the text decompiled from its .rmb
 // checks cleanly, is a fixed point of the formatter, and lowers to a grammar that derives the
 // same string for the same seed; expressions come back with the fewest parentheses and compile
 // to the same bytecode.
 #include <catch2/catch.hpp>
 
 #include "../cli/cli_runner.h"
-#include "../compiler/rmb_test_util.h"
-#include "compiler/rmb_codec.h"
-#include "compiler/rmb_decompile.h"
+#include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_decompile.h"
 #include "grammar/format.h"
 #include "grammar/parser.h"
+#include "rmb_test_util.h"
 
 using namespace ramus;
 

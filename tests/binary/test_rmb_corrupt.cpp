@@ -4,7 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include "compiler/expr_vm.h"
-#include "compiler/rmb_codec.h"
+#include "formats/rmb/rmb_codec.h"
 #include "rmb_test_util.h"
 
 using namespace ramus;

@@ -7,8 +7,8 @@
 #include <fstream>
 #include <sstream>
 
-#include "compiler/rmb_codec.h"
 #include "core/atomic_file.h"
+#include "formats/rmb/rmb_codec.h"
 #include "rmb_test_util.h"
 
 using namespace ramus;
@@ -26,7 +26,7 @@ std::string dump_of(const std::string& relative) {
   SourceManager sm;
   DiagnosticSink diags;
   const std::string text = read(std::string(RAMUS_SOURCE_DIR) + "/" + relative);
-  // Named as `ramus build` stores it: relative to the grammar's own folder (compiler/rmb_paths.h).
+  // Named as `ramus build` stores it: relative to the grammar's own folder (formats/rmb/rmb_paths.h).
   const std::string name = relative.substr(relative.rfind('/') + 1);
   const ir::Grammar g = lower_text(name, text, GrowOptions{}, sm, diags);
   const std::string bytes = encode_rmb(g);

@@ -7,10 +7,10 @@
 #include <cmath>
 
 #include "../cli/cli_runner.h"
-#include "../compiler/rmb_test_util.h"
-#include "compiler/rmb_codec.h"
-#include "compiler/rmb_zstd.h"
 #include "compiler/turtle.h"
+#include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_zstd.h"
+#include "rmb_test_util.h"
 
 using namespace ramus;
 

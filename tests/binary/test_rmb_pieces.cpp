@@ -6,9 +6,9 @@
 
 #include "../cli/cli_runner.h"
 #include "compiler/pipeline.h"
-#include "compiler/rmb_codec.h"
-#include "compiler/rmb_decompile.h"
-#include "compiler/rmb_pieces_ast.h"
+#include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_decompile.h"
+#include "formats/rmb/rmb_pieces_ast.h"
 #include "grammar/loader.h"
 #include "rejects_damage.h"
 

@@ -5,8 +5,8 @@
 #include <cmath>
 #include <cstring>
 
-#include "compiler/rmb_codec.h"
 #include "core/rng.h"
+#include "formats/rmb/rmb_codec.h"
 #include "rmb_test_util.h"
 
 using namespace ramus;

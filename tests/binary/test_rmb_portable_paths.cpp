@@ -1,12 +1,12 @@
 // `ramus build --target binary` stores source locations that depend on the grammar alone
-// (compiler/rmb_paths.h): the same bytes from any working directory and from a copy of the
+// (formats/rmb/rmb_paths.h): the same bytes from any working directory and from a copy of the
 // tree at another path, with stdlib imports named stdlib/...
 #include <catch2/catch.hpp>
 #include <string>
 
 #include "../cli/cli_runner.h"
-#include "compiler/rmb_codec.h"
-#include "compiler/rmb_paths.h"
+#include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_paths.h"
 
 using namespace cli_test;
 

@@ -3,7 +3,7 @@
 // the same bytes.
 #include <catch2/catch.hpp>
 
-#include "compiler/rmb_codec.h"
+#include "formats/rmb/rmb_codec.h"
 #include "rmb_test_util.h"
 
 using namespace ramus;

@@ -6,10 +6,10 @@
 #include <catch2/catch.hpp>
 
 #include "../cli/cli_runner.h"
-#include "../compiler/rmb_test_util.h"
-#include "compiler/rmb_codec.h"
-#include "compiler/rmb_decompile.h"
+#include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_decompile.h"
 #include "rejects_damage.h"
+#include "rmb_test_util.h"
 
 using namespace ramus;
 using namespace cli_test;

@@ -3,8 +3,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "compiler/infer/merge/branch_merge.h"
 #include "core/rng.h"
+#include "infer/merge/branch_merge.h"
 
 using namespace ramus;
 using merge::merge_branches;

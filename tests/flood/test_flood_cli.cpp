@@ -2,9 +2,9 @@
 #include <catch2/catch.hpp>
 
 #include "../cli/cli_runner.h"
-#include "compiler/infer/merge/merge_angles.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
+#include "infer/merge/merge_angles.h"
 #include "tests/flood/flood_fixtures.h"
 
 using namespace cli_test;

@@ -3,13 +3,13 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "backends/scanner/harness.h"
 #include "compiler/grow.h"
-#include "compiler/infer/flood/flood_skeleton.h"
-#include "compiler/infer/flood/line_fit.h"
-#include "compiler/infer/reconstruct/compare.h"
 #include "formats/point_cloud_io.h"
+#include "infer/flood/flood_skeleton.h"
+#include "infer/flood/line_fit.h"
+#include "infer/reconstruct/compare.h"
 #include "tests/flood/flood_fixtures.h"
+#include "tests/support/harness.h"
 
 using namespace ramus;
 using flood::flood_reconstruct;

@@ -9,7 +9,7 @@
 
 #include "compiler/derive.h"
 #include "compiler/expr_vm.h"
-#include "compiler/rmb_codec.h"
+#include "formats/rmb/rmb_codec.h"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
   std::string_view bytes(reinterpret_cast<const char*>(data), size);

@@ -1,6 +1,6 @@
 // Round-trip fuzz target for the .rmb format (docs/binary-format.md): grammar text that lowers
 // cleanly is encoded (exact, quantized, zstd), decoded and encoded again, which must give the
-// same bytes; and it is decompiled (compiler/rmb_decompile.h), which must give text that
+// same bytes; and it is decompiled (formats/rmb/rmb_decompile.h), which must give text that
 // parses, checks and lowers to bytecode identical code by code, and that decompiles to itself.
 // Text that does not lower, and grammars the language cannot spell (DecompileError), are
 // skipped; any other difference aborts.
@@ -9,8 +9,8 @@
 #include <string>
 
 #include "compiler/pipeline.h"
-#include "compiler/rmb_codec.h"
-#include "compiler/rmb_decompile.h"
+#include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_decompile.h"
 
 namespace {
 

@@ -5,9 +5,9 @@
 #include <catch2/catch.hpp>
 #include <string>
 
-#include "backends/scanner/harness.h"
 #include "compiler/grow.h"
-#include "tests/compiler/reconstruct_fixtures.h"
+#include "tests/reconstruct/reconstruct_fixtures.h"
+#include "tests/support/harness.h"
 
 using namespace ramus;
 

@@ -3,8 +3,8 @@
 
 #include <limits>
 
-#include "compiler/infer/reconstruct.h"
 #include "core/rng.h"
+#include "infer/reconstruct.h"
 
 using namespace ramus;
 

@@ -4,7 +4,7 @@
 #include <string>
 
 #include "../skeleton_infer/skeleton_fixtures.h"
-#include "backends/scanner/harness.h"
+#include "tests/support/harness.h"
 
 using namespace ramus;
 

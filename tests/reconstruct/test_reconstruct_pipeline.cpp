@@ -1,9 +1,9 @@
 // reconstruct() end to end on synthetic trees whose skeletons are known.
 #include <catch2/catch.hpp>
 
-#include "compiler/infer/reconstruct.h"
-#include "compiler/infer/reconstruct/compare.h"
-#include "tests/compiler/reconstruct_fixtures.h"
+#include "infer/reconstruct.h"
+#include "infer/reconstruct/compare.h"
+#include "tests/reconstruct/reconstruct_fixtures.h"
 
 using namespace ramus;
 

@@ -2,8 +2,8 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 
-#include "compiler/infer/reconstruct.h"
 #include "formats/point_cloud_io.h"
+#include "infer/reconstruct.h"
 
 using namespace ramus;
 

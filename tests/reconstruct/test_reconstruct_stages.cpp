@@ -3,10 +3,10 @@
 
 #include <cmath>
 
-#include "compiler/infer/reconstruct/forest.h"
-#include "compiler/infer/reconstruct/graph.h"
-#include "compiler/infer/reconstruct/inflate.h"
-#include "compiler/infer/reconstruct/refine.h"
+#include "infer/reconstruct/forest.h"
+#include "infer/reconstruct/graph.h"
+#include "infer/reconstruct/inflate.h"
+#include "infer/reconstruct/refine.h"
 
 using namespace ramus::bsg;
 

@@ -8,9 +8,9 @@
 
 #include "compiler/grow.h"
 #include "compiler/pipeline.h"
-#include "compiler/rmb_codec.h"
-#include "compiler/rmb_pieces_ast.h"
 #include "core/skeleton.h"
+#include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_pieces_ast.h"
 #include "grammar/loader.h"
 #include "runtime/ramus_runtime.h"
 

@@ -10,13 +10,13 @@
 #include <vector>
 
 #include "compiler/grow.h"
-#include "compiler/infer/skeleton/fidelity.h"
 #include "compiler/pipeline.h"
 #include "core/skeleton.h"
 #include "grammar/diagnostic.h"
 #include "grammar/format.h"
 #include "grammar/parser.h"
 #include "grammar/source.h"
+#include "infer/skeleton/fidelity.h"
 
 namespace skeleton_test {
 

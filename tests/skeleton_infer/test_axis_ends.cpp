@@ -5,10 +5,10 @@
 #include <cmath>
 #include <string>
 
-#include "compiler/infer/skeleton/branch_rules.h"
-#include "compiler/infer/skeleton/fidelity.h"
-#include "compiler/infer/skeleton/rule_clustering.h"
-#include "compiler/infer/skeleton/skeleton_grammar.h"
+#include "infer/skeleton/branch_rules.h"
+#include "infer/skeleton/fidelity.h"
+#include "infer/skeleton/rule_clustering.h"
+#include "infer/skeleton/skeleton_grammar.h"
 #include "skeleton_fixtures.h"
 
 using namespace ramus;

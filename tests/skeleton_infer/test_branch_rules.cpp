@@ -2,8 +2,8 @@
 // against the turtle: a grammar that turns by known angles gives those angles back.
 #include <catch2/catch.hpp>
 
-#include "compiler/infer/skeleton/branch_rules.h"
 #include "core/rng.h"
+#include "infer/skeleton/branch_rules.h"
 #include "skeleton_fixtures.h"
 
 using namespace ramus;

@@ -5,9 +5,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "compiler/infer/skeleton/fidelity.h"
 #include "core/number_text.h"
 #include "core/rng.h"
+#include "infer/skeleton/fidelity.h"
 #include "skeleton_fixtures.h"
 
 using namespace ramus;

@@ -6,9 +6,9 @@
 #include <string>
 
 #include "../cli/cli_runner.h"
-#include "compiler/infer/skeleton/fidelity.h"
-#include "compiler/infer/skeleton/skeleton_grammar.h"
 #include "core/rng.h"
+#include "infer/skeleton/fidelity.h"
+#include "infer/skeleton/skeleton_grammar.h"
 #include "skeleton_fixtures.h"
 
 using namespace ramus;

@@ -4,8 +4,8 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "compiler/infer/skeleton/rule_clustering.h"
 #include "core/rng.h"
+#include "infer/skeleton/rule_clustering.h"
 
 using namespace ramus;
 using namespace ramus::skeleton_infer;

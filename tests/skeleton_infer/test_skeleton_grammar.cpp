@@ -3,9 +3,9 @@
 // skeletons give small grammars or clear errors.
 #include <catch2/catch.hpp>
 
-#include "compiler/infer/skeleton/fidelity.h"
-#include "compiler/infer/skeleton/skeleton_grammar.h"
 #include "core/rng.h"
+#include "infer/skeleton/fidelity.h"
+#include "infer/skeleton/skeleton_grammar.h"
 #include "skeleton_fixtures.h"
 
 using namespace ramus;

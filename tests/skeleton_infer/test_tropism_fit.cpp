@@ -4,10 +4,10 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "compiler/infer/skeleton/branch_rules.h"
-#include "compiler/infer/skeleton/skeleton_grammar.h"
-#include "compiler/infer/skeleton/tropism_fit.h"
 #include "core/rng.h"
+#include "infer/skeleton/branch_rules.h"
+#include "infer/skeleton/skeleton_grammar.h"
+#include "infer/skeleton/tropism_fit.h"
 #include "skeleton_fixtures.h"
 
 using namespace ramus;

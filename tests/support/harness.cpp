@@ -1,4 +1,4 @@
-#include "backends/scanner/harness.h"
+#include "tests/support/harness.h"
 
 #include <chrono>
 #include <cmath>

@@ -8,9 +8,9 @@
 #include <vector>
 
 #include "backends/scanner/scanner.h"
-#include "compiler/infer/reconstruct.h"
-#include "compiler/infer/reconstruct/compare.h"
 #include "core/skeleton.h"
+#include "infer/reconstruct.h"
+#include "infer/reconstruct/compare.h"
 
 namespace ramus::scanner {
 

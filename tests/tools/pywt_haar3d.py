@@ -5,7 +5,7 @@ usage: pywt_haar3d.py IN OUT standard|nonstandard
 
 IN holds the side n on its first line and then n^3 values, x fastest (index x + n*(y + n*z)).
 OUT receives the orthonormal Haar coefficients ("haar", periodization) in the layout of
-compiler/infer/wavelet/haar.h, in the same order, one per line.
+infer/wavelet/haar.h, in the same order, one per line.
 """
 import sys
 

@@ -7,8 +7,8 @@
 #include <cstdint>
 #include <vector>
 
-#include "compiler/infer/wavelet/alignment.h"
 #include "core/rng.h"
+#include "infer/wavelet/alignment.h"
 
 namespace ramus::wavelet::test {
 

@@ -3,13 +3,13 @@
 // bad input gets a clear error.
 #include <catch2/catch.hpp>
 
-#include "compiler/infer/wavelet/infer_grammar.h"
 #include "compiler/pipeline.h"
-#include "compiler/rmb_codec.h"
 #include "compiler/turtle.h"
+#include "formats/rmb/rmb_codec.h"
 #include "fractal_cloud.h"
 #include "grammar/format.h"
 #include "grammar/parser.h"
+#include "infer/wavelet/infer_grammar.h"
 
 using namespace ramus;
 using namespace ramus::wavelet;

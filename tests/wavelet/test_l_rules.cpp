@@ -3,8 +3,8 @@
 // force over random ones.
 #include <catch2/catch.hpp>
 
-#include "compiler/infer/wavelet/l_rules.h"
 #include "core/rng.h"
+#include "infer/wavelet/l_rules.h"
 
 using namespace ramus;
 using namespace ramus::wavelet;

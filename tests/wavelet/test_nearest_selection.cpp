@@ -5,8 +5,8 @@
 #include <string>
 
 #include "../compiler/engine_helpers.h"
-#include "compiler/rmb_codec.h"
 #include "core/rng.h"
+#include "formats/rmb/rmb_codec.h"
 #include "grammar/check.h"
 #include "grammar/format.h"
 #include "grammar/parser.h"

@@ -1,9 +1,9 @@
-// Alignment and quantization of scans (compiler/infer/wavelet/alignment.h, voxelize.h; III-A).
+// Alignment and quantization of scans (infer/wavelet/alignment.h, voxelize.h; III-A).
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "compiler/infer/wavelet/alignment.h"
-#include "compiler/infer/wavelet/voxelize.h"
+#include "infer/wavelet/alignment.h"
+#include "infer/wavelet/voxelize.h"
 
 using namespace ramus;
 using namespace ramus::wavelet;

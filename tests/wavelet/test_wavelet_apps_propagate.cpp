@@ -9,8 +9,8 @@
 
 #include "../cli/cli_runner.h"
 #include "../compiler/engine_helpers.h"
-#include "compiler/infer/wavelet/propagate.h"
-#include "compiler/rmb_codec.h"
+#include "formats/rmb/rmb_codec.h"
+#include "infer/wavelet/propagate.h"
 
 using namespace ramus;
 using namespace ramus::wavelet;

@@ -7,10 +7,10 @@
 #include <string>
 
 #include "../cli/cli_runner.h"
-#include "compiler/infer/wavelet/alignment.h"
-#include "compiler/infer/wavelet/symmetrize.h"
 #include "core/rng.h"
 #include "formats/point_cloud_io.h"
+#include "infer/wavelet/alignment.h"
+#include "infer/wavelet/symmetrize.h"
 
 using namespace ramus;
 using namespace ramus::wavelet;

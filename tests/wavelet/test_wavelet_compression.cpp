@@ -1,7 +1,7 @@
-// Compression figures of IV-A / Table I (compiler/infer/wavelet/compression.h).
+// Compression figures of IV-A / Table I (infer/wavelet/compression.h).
 #include <catch2/catch.hpp>
 
-#include "compiler/infer/wavelet/compression.h"
+#include "infer/wavelet/compression.h"
 #include "wavelet_test_util.h"
 
 using namespace ramus::wavelet;

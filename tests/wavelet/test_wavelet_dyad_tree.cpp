@@ -1,8 +1,8 @@
-// Minimum spanning tree per dyad (III-E): compiler/infer/wavelet/dyad_tree.h.
+// Minimum spanning tree per dyad (III-E): infer/wavelet/dyad_tree.h.
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "compiler/infer/wavelet/dyad_tree.h"
+#include "infer/wavelet/dyad_tree.h"
 #include "wavelet_fractal.h"
 
 using namespace ramus;

@@ -1,4 +1,4 @@
-// Euclidean minimum spanning trees (compiler/infer/wavelet/emst.h; III-E).
+// Euclidean minimum spanning trees (infer/wavelet/emst.h; III-E).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
@@ -6,7 +6,7 @@
 #include <limits>
 #include <memory>
 
-#include "compiler/infer/wavelet/emst.h"
+#include "infer/wavelet/emst.h"
 #include "wavelet_test_util.h"
 
 using namespace ramus;

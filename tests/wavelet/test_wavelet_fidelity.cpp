@@ -6,20 +6,20 @@
 #include <filesystem>
 #include <string>
 
-#include "backends/scanner/harness.h"
 #include "backends/scanner/scanner.h"
 #include "compiler/derive.h"
 #include "compiler/grow.h"
-#include "compiler/infer/wavelet/dyad_tree.h"
-#include "compiler/infer/wavelet/fidelity.h"
-#include "compiler/infer/wavelet/haar.h"
-#include "compiler/infer/wavelet/voxelize.h"
 #include "compiler/pipeline.h"
 #include "compiler/turtle.h"
 #include "core/rng.h"
 #include "formats/point_cloud_io.h"
 #include "grammar/diagnostic.h"
 #include "grammar/source.h"
+#include "infer/wavelet/dyad_tree.h"
+#include "infer/wavelet/fidelity.h"
+#include "infer/wavelet/haar.h"
+#include "infer/wavelet/voxelize.h"
+#include "tests/support/harness.h"
 
 using namespace ramus;
 using namespace ramus::wavelet;

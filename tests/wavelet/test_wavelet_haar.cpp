@@ -1,11 +1,11 @@
-// The 3D Haar transform (compiler/infer/wavelet/haar.h; Friedman & Stamos 2013, III-B).
+// The 3D Haar transform (infer/wavelet/haar.h; Friedman & Stamos 2013, III-B).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
 #include <sstream>
 
-#include "compiler/infer/wavelet/haar.h"
+#include "infer/wavelet/haar.h"
 #include "wavelet_test_util.h"
 
 using namespace ramus::wavelet;

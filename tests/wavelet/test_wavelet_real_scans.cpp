@@ -4,11 +4,11 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 
-#include "compiler/infer/wavelet/compression.h"
-#include "compiler/infer/wavelet/dyad_tree.h"
-#include "compiler/infer/wavelet/super_resolution.h"
-#include "compiler/infer/wavelet/voxelize.h"
 #include "formats/point_cloud_io.h"
+#include "infer/wavelet/compression.h"
+#include "infer/wavelet/dyad_tree.h"
+#include "infer/wavelet/super_resolution.h"
+#include "infer/wavelet/voxelize.h"
 
 using namespace ramus;
 using namespace ramus::wavelet;

@@ -1,10 +1,10 @@
-// Voxel grammar (III-C) and super-resolution (III-D): compiler/infer/wavelet/voxel_grammar.h,
+// Voxel grammar (III-C) and super-resolution (III-D): infer/wavelet/voxel_grammar.h,
 // super_resolution.h.
 #include <bit>
 #include <catch2/catch.hpp>
 
-#include "compiler/infer/wavelet/super_resolution.h"
-#include "compiler/infer/wavelet/voxel_grammar.h"
+#include "infer/wavelet/super_resolution.h"
+#include "infer/wavelet/voxel_grammar.h"
 #include "wavelet_fractal.h"
 #include "wavelet_test_util.h"
 

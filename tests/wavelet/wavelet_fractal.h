@@ -3,7 +3,7 @@
 // Sierpinski pattern. Its next level is known exactly, the ground truth for super-resolution.
 #pragma once
 
-#include "compiler/infer/wavelet/voxel_grid.h"
+#include "infer/wavelet/voxel_grid.h"
 
 namespace ramus::wavelet::test {
 

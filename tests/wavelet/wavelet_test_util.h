@@ -7,8 +7,8 @@
 #include <fstream>
 #include <string>
 
-#include "compiler/infer/wavelet/voxel_grid.h"
 #include "core/rng.h"
+#include "infer/wavelet/voxel_grid.h"
 
 namespace ramus::wavelet::test {
 

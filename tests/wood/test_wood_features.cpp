@@ -6,11 +6,11 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "compiler/infer/wood/features.h"
-#include "compiler/infer/wood/mixture.h"
-#include "compiler/infer/wood/otsu.h"
-#include "compiler/infer/wood/voxel_subsample.h"
 #include "core/rng.h"
+#include "infer/wood/features.h"
+#include "infer/wood/mixture.h"
+#include "infer/wood/otsu.h"
+#include "infer/wood/voxel_subsample.h"
 
 using namespace ramus;
 using namespace ramus::wood;

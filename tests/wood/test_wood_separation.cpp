@@ -11,9 +11,9 @@
 
 #include "../skeleton_infer/skeleton_fixtures.h"
 #include "backends/scanner/scanner.h"
-#include "compiler/infer/reconstruct.h"
-#include "compiler/infer/wood/wood_separation.h"
 #include "formats/point_cloud_io.h"
+#include "infer/reconstruct.h"
+#include "infer/wood/wood_separation.h"
 
 using namespace ramus;
 
