@@ -14,9 +14,9 @@ namespace ramus::shape {
 inline constexpr double kTouchShare = 1e-6;  // endpoints this share of the height apart touch
 
 struct Pieces {
-  std::size_t count = 0;       // pieces holding at least one segment of positive length
-  double largest_length = 0;   // total segment length of the longest piece
-  double total_length = 0;     // of all segments
+  std::size_t count = 0;      // pieces holding at least one segment of positive length
+  double largest_length = 0;  // total segment length of the longest piece
+  double total_length = 0;    // of all segments
   // Piece of each node, 0-based in order of first appearance; pieces without length and
   // nodes on no segment get kNoPiece.
   std::vector<std::size_t> piece_of_node;

@@ -39,8 +39,7 @@ double lean_degrees(const Skeleton& skeleton) {
     return std::numeric_limits<double>::quiet_NaN();
   }
   // The envelope's sampling of a reference: a quarter of its cell.
-  return trunk_lean_degrees(
-      sample_edges(skeleton, (hi - lo) / (kEnvelopeCells * kSamplesPerCell)));
+  return trunk_lean_degrees(sample_edges(skeleton, (hi - lo) / (kEnvelopeCells * kSamplesPerCell)));
 }
 
 TreeShape measure_tree_shape(const Skeleton& skeleton) {

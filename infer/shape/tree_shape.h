@@ -14,14 +14,14 @@ namespace ramus::shape {
 inline constexpr double kAxisLockDegrees = 3.0;
 
 struct TreeShape {
-  std::size_t pieces = 0;            // connected pieces with length (pieces.h)
-  double largest_piece_share = 0;    // length of the longest piece / total length (0 if none)
-  double axis_locked_share = 0;      // length within 3 degrees of an axis / total length
-  double height = 0;                 // max z - min z of the segment endpoints
-  double lean_degrees = 0;           // trunk_lean.h, from samples every height / 128; NaN if
-                                     // undefined
+  std::size_t pieces = 0;          // connected pieces with length (pieces.h)
+  double largest_piece_share = 0;  // length of the longest piece / total length (0 if none)
+  double axis_locked_share = 0;    // length within 3 degrees of an axis / total length
+  double height = 0;               // max z - min z of the segment endpoints
+  double lean_degrees = 0;         // trunk_lean.h, from samples every height / 128; NaN if
+                                   // undefined
   double total_length = 0;
-  std::size_t segments = 0;          // segments of positive length
+  std::size_t segments = 0;  // segments of positive length
 };
 
 TreeShape measure_tree_shape(const Skeleton& skeleton);

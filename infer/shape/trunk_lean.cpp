@@ -17,6 +17,35 @@ double median_of(std::vector<double> v) {
   return v[mid];
 }
 
+// x = x0 + slope_x (z - z_mean), the same for y: the least-squares line of points against
+// their height (a trunk is nearer vertical than horizontal, so z is the parameter).
+// All points at one height (b0 alone): vertical through their mean.
+struct Line {
+  Vec3 mean;
+  double slope_x = 0, slope_y = 0;
+  Vec3 at(double z) const {
+    return {mean.x + slope_x * (z - mean.z), mean.y + slope_y * (z - mean.z), z};
+  }
+};
+
+Line fit_line(const std::vector<Vec3>& points) {
+  Line l;
+  for (const Vec3& p : points) l.mean += p;
+  l.mean = l.mean / double(points.size());
+  double zz = 0, xz = 0, yz = 0;
+  for (const Vec3& p : points) {
+    const Vec3 d = p - l.mean;
+    zz += d.z * d.z;
+    xz += d.x * d.z;
+    yz += d.y * d.z;
+  }
+  if (zz > 0) {
+    l.slope_x = xz / zz;
+    l.slope_y = yz / zz;
+  }
+  return l;
+}
+
 }  // namespace
 
 double trunk_lean_degrees(const std::vector<Vec3>& points) {
@@ -44,14 +73,15 @@ double trunk_lean_degrees(const std::vector<Vec3>& points) {
     if (k >= first && k < last) slices[std::size_t(k - first)].push_back(p);
   }
 
-  Vec3 dir{0, 0, 1};  // horizontal offset per unit of height, from b0
-  Vec3 sum_all, sum_band;
-  double n_all = 0, n_band = 0;
+  // Slice centres found so far, and where the trunk's line through them and b0 crosses a
+  // height (least squares of x and y against z; vertical through b0 until a centre is found).
+  std::vector<Vec3> centres{b0};
+  auto predict = [&](double z) { return fit_line(centres).at(z); };
+  std::vector<Vec3> band;
   for (std::size_t k = 0; k < slices.size(); ++k) {
     const std::vector<Vec3>& slice = slices[k];
     if (slice.empty()) continue;
-    const double mid_z = z0 + (double(first + int(k)) + 0.5) * thick;
-    Vec3 centre = b0 + dir * (mid_z - b0.z);
+    Vec3 centre = predict(z0 + (double(first + int(k)) + 0.5) * thick);
     bool found = false;
     for (int shift = 0; shift < kLeanShifts; ++shift) {
       Vec3 sum;
@@ -67,18 +97,18 @@ double trunk_lean_degrees(const std::vector<Vec3>& points) {
       found = true;
     }
     if (!found) continue;
-    sum_all += centre;
-    n_all += 1;
-    const Vec3 d = sum_all / n_all - b0;
-    if (d.z > 0) dir = d / d.z;
+    centres.push_back(centre);
     const double above = centre.z - z0;
-    if (above >= kLeanBandLow * h && above <= kLeanBandHigh * h) {
-      sum_band += centre;
-      n_band += 1;
-    }
+    if (above >= kLeanBandLow * h && above <= kLeanBandHigh * h) band.push_back(centre);
   }
-  if (n_band == 0) return nan;
-  const Vec3 d = sum_band / n_band - b0;
+  // From b0 to the mean of the band's centres rather than the slope of a line through them:
+  // where a trunk forks inside the band, the top centres follow the fork, and a slope, whose
+  // lever is half the band, turned that into 20 degrees for the reconstruction of
+  // adtree_tree1 against 2 for its scan.
+  if (band.empty()) return nan;
+  Vec3 mean;
+  for (const Vec3& c : band) mean += c;
+  const Vec3 d = mean / double(band.size()) - b0;
   if (!(d.z > 0)) return nan;
   constexpr double kDegrees = 180.0 / 3.14159265358979323846;
   return std::atan2(std::hypot(d.x, d.y), d.z) * kDegrees;

@@ -3,10 +3,10 @@
 //
 // The trunk is followed upwards from b0, the centroid of the lowest 5 % of the height (H), in
 // slices H / 64 thick up to 0.3 H: in each slice, the centre is the mean of the points within a
-// trunk radius w (horizontally) of where the line so far predicts it, re-centred three times
-// (mean shift); the line then runs from b0 through the mean of the centres found so far. The
-// lean is the angle from vertical of the vector from b0 to the mean of the centres of the
-// slices whose height above the lowest point lies in [0.1 H, 0.3 H].
+// trunk radius w (horizontally) of where the line fitted so far (least squares of x and y
+// against z through b0 and the earlier centres) predicts it, re-centred three times (mean
+// shift). The lean is the angle from vertical of the vector from b0 to the mean of the centres
+// of the slices whose height above the lowest point lies in [0.1 H, 0.3 H].
 // w = max(H / 32, twice the median horizontal distance of the lowest 5 % from b0): a skeleton's
 // trunk is a line, a scan's a ring of bark. Points farther than w from the trunk never count,
 // so side branches and drooping twigs cannot tip it; a mean over the whole band kept below its
