@@ -58,8 +58,9 @@ void check_options(const CompareArgs& args) {
   }
   if (!args.picture.empty()) {
     if (!any(SourceKind::Scan) && !any(SourceKind::Grammar)) {
-      throw UserError("--picture draws a scan or a grammar's trees, and both sources are skeleton "
-                      "files (.json); use `ramus preview` on a grammar instead");
+      throw UserError(
+          "--picture draws a scan or a grammar's trees, and both sources are skeleton "
+          "files (.json); use `ramus preview` on a grammar instead");
     }
     const std::string ext = std::filesystem::path(args.picture).extension().string();
     if (ext != ".png") throw UserError("--picture writes a .png file, not " + args.picture);

@@ -39,8 +39,8 @@ struct Panel {
 // right, so that the view is right-handed like the front one); z is up in both.
 struct Projection {
   Vec3 right, forward;
-  double scale = 1;        // raster pixels per unit
-  double cx = 0, cy = 0;   // raster position of the base
+  double scale = 1;       // raster pixels per unit
+  double cx = 0, cy = 0;  // raster position of the base
 };
 
 Vec3f project(const Projection& v, const Vec3& base, const Vec3& p) {
@@ -111,8 +111,8 @@ void write_compare_picture(const std::string& path, const CompareSide& a, const 
                               ? std::min(side->trees.size(), kPictureSeeds)
                               : side->trees.size();
     for (std::size_t i = 0; i < n; ++i) {
-      panels.push_back({nullptr, &side->trees[i],
-                        side->cloud ? kReconstructionColour : kTreeColour, {}});
+      panels.push_back(
+          {nullptr, &side->trees[i], side->cloud ? kReconstructionColour : kTreeColour, {}});
     }
   }
   // One scale for all: the widest half-width and the tallest height above a base.
@@ -146,8 +146,10 @@ void write_compare_picture(const std::string& path, const CompareSide& a, const 
       draw_panel(r, panels[std::size_t(c)], v);
       const std::vector<std::uint8_t> px = r.resolve(kSupersample);
       for (int y = 0; y < kPanelHeight; ++y) {
-        std::copy_n(&px[std::size_t(y) * kPanelWidth * 3], kPanelWidth * 3,
-                    &image[((std::size_t(row) * kPanelHeight + y) * out_w + std::size_t(c) * kPanelWidth) * 3]);
+        std::copy_n(
+            &px[std::size_t(y) * kPanelWidth * 3], kPanelWidth * 3,
+            &image[((std::size_t(row) * kPanelHeight + y) * out_w + std::size_t(c) * kPanelWidth) *
+                   3]);
       }
     }
   }

@@ -104,8 +104,8 @@ ShapeReport measure_shapes(const CompareSide& a, const CompareSide& b) {
 
 void print_shape_report(const ShapeReport& r) {
   std::printf("envelope IoU and tree shape against %s\n", r.reference.c_str());
-  std::printf("%-28s %7s %6s %13s %11s %12s %8s %9s\n", "tree", "IoU", "pieces",
-              "largest-piece", "axis-locked", "height-ratio", "lean-deg", "lean-diff");
+  std::printf("%-28s %7s %6s %13s %11s %12s %8s %9s\n", "tree", "IoU", "pieces", "largest-piece",
+              "axis-locked", "height-ratio", "lean-deg", "lean-diff");
   for (const ShapeRow& row : r.rows) {
     std::printf("%-28s %7.4f %6zu %13.4f %11.4f %12.4f %8s %9s\n", row.label.c_str(), row.iou,
                 row.pieces, row.largest_piece_share, row.axis_locked_share, row.height_ratio,

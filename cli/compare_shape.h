@@ -18,15 +18,15 @@ struct ShapeRow {
   double largest_piece_share = 0;
   double axis_locked_share = 0;
   double height_ratio = 0;
-  double lean_degrees = 0;      // NaN when undefined
-  double lean_difference = 0;   // the tree's lean - the reference's; NaN when either is
+  double lean_degrees = 0;     // NaN when undefined
+  double lean_difference = 0;  // the tree's lean - the reference's; NaN when either is
 };
 
 struct ShapeReport {
-  std::string reference;         // what the rows are measured against
-  std::vector<ShapeRow> rows;    // the reconstruction of a scan A first, then B's trees
+  std::string reference;       // what the rows are measured against
+  std::vector<ShapeRow> rows;  // the reconstruction of a scan A first, then B's trees
   bool has_reconstruction = false;
-  double median_iou = 0;         // over B's rows
+  double median_iou = 0;  // over B's rows
 };
 
 // Row i of B pairs B's tree i with A's tree i (a side with one tree is repeated); a scan A is
