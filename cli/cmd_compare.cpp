@@ -120,6 +120,12 @@ void add_compare(CLI::App& app, const GlobalOptions& global, std::function<int()
   sub->add_option("--picture", args->picture,
                   "also draw the scan, its reconstruction and the first 3 grown trees, front and "
                   "side (.png)");
+  sub->footer(
+      "A is the reference. Printed: the envelope IoU of B's trees against A (a scan's own "
+      "reconstruction first, as the reference line), pieces, axis-locked share, height ratio "
+      "and trunk lean per tree (docs/shape-measures.md), then the KS distances "
+      "(docs/skeleton-inference.md, Fidelity). Options that do not apply to the sources are "
+      "errors.");
   sub->callback([args, sub, &global, &run] {
     args->given_seeds = sub->count("--seeds") + sub->count("--seed") > 0;
     args->given_scan_options =

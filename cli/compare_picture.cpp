@@ -21,6 +21,7 @@ constexpr int kPanelWidth = 320;   // output pixels per column
 constexpr int kPanelHeight = 400;  // per row
 constexpr int kSupersample = 3;
 constexpr double kMargin = 0.06;
+constexpr double kExtentPercentile = 0.995;
 constexpr Rgb kBackground{0.96f, 0.96f, 0.94f};
 constexpr Rgb kPointColour{0.25f, 0.42f, 0.62f};
 constexpr Rgb kReconstructionColour{0.62f, 0.22f, 0.14f};
@@ -84,6 +85,12 @@ std::vector<Vec3> panel_points(const Panel& p) {
   return shape::sample_edges(*p.tree, step);
 }
 
+double percentile(std::vector<double>& v, double share) {
+  const std::size_t k = std::size_t(share * double(v.size() - 1));
+  std::nth_element(v.begin(), v.begin() + std::ptrdiff_t(k), v.end());
+  return v[k];
+}
+
 void draw_panel(Raster& r, const Panel& p, const Projection& v) {
   if (p.cloud != nullptr) {
     for (const Vec3f& q : p.cloud->positions) {
@@ -115,16 +122,21 @@ void write_compare_picture(const std::string& path, const CompareSide& a, const 
           {nullptr, &side->trees[i], side->cloud ? kReconstructionColour : kTreeColour, {}});
     }
   }
-  // One scale for all: the widest half-width and the tallest height above a base.
+  // One scale for all: the widest half-width and the tallest height above a base, each the
+  // 99.5th percentile of its panel, so that a stray point of a scan (pytlidar_tree_1 has one
+  // 9 m beside the crown) does not shrink every tree; what lies beyond is cut at the edge.
   double half = 1e-12, tall = 1e-12;
   for (Panel& p : panels) {
     const std::vector<Vec3> pts = panel_points(p);
     if (pts.empty()) continue;
     p.base = shape::find_base(pts);
+    std::vector<double> across, up;
     for (const Vec3& q : pts) {
-      half = std::max({half, std::abs(q.x - p.base.axis.x), std::abs(q.y - p.base.axis.y)});
-      tall = std::max(tall, q.z - p.base.axis.z);
+      across.push_back(std::max(std::abs(q.x - p.base.axis.x), std::abs(q.y - p.base.axis.y)));
+      up.push_back(q.z - p.base.axis.z);
     }
+    half = std::max(half, percentile(across, kExtentPercentile));
+    tall = std::max(tall, percentile(up, kExtentPercentile));
   }
   const int pw = kPanelWidth * kSupersample, ph = kPanelHeight * kSupersample;
   const double scale = std::min(pw * (1 - 2 * kMargin) / (2 * half), ph * (1 - 2 * kMargin) / tall);

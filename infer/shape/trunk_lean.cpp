@@ -46,37 +46,16 @@ Line fit_line(const std::vector<Vec3>& points) {
   return l;
 }
 
-}  // namespace
-
-double trunk_lean_degrees(const std::vector<Vec3>& points) {
-  const double nan = std::numeric_limits<double>::quiet_NaN();
-  if (points.empty()) return nan;
-  const TreeBase base = find_base(points);
-  const double h = base.height;
-  if (!(h > 0)) return nan;
-  const Vec3 b0 = base.low_centroid;
-  const double z0 = base.axis.z;
-
-  std::vector<double> low_r;
-  for (const Vec3& p : points) {
-    if (p.z <= z0 + kBaseShare * h) low_r.push_back(std::hypot(p.x - b0.x, p.y - b0.y));
-  }
-  const double w = std::max(h / kEnvelopeCells, 2 * median_of(low_r));
-
-  // Points of each slice from the top of the base region to the top of the band.
-  const double thick = h / kLeanSlices;
-  const int first = int(std::floor(kBaseShare * kLeanSlices));
-  const int last = int(std::ceil(kLeanBandHigh * kLeanSlices));
-  std::vector<std::vector<Vec3>> slices(std::size_t(last - first));
-  for (const Vec3& p : points) {
-    const int k = int(std::floor((p.z - z0) / thick));
-    if (k >= first && k < last) slices[std::size_t(k - first)].push_back(p);
-  }
-
+// The centres of the trunk in the slices whose height above the lowest point lies in the band,
+// tracked from b0 upwards; `start` predicts the first centre.
+std::vector<Vec3> track_trunk(const std::vector<std::vector<Vec3>>& slices, int first, double thick,
+                              double z0, double h, double w, const Vec3& b0, const Line& start) {
   // Slice centres found so far, and where the trunk's line through them and b0 crosses a
-  // height (least squares of x and y against z; vertical through b0 until a centre is found).
+  // height (least squares of x and y against z; `start` until a centre is found).
   std::vector<Vec3> centres{b0};
-  auto predict = [&](double z) { return fit_line(centres).at(z); };
+  auto predict = [&](double z) {
+    return centres.size() > 1 ? fit_line(centres).at(z) : start.at(z);
+  };
   std::vector<Vec3> band;
   for (std::size_t k = 0; k < slices.size(); ++k) {
     const std::vector<Vec3>& slice = slices[k];
@@ -101,6 +80,48 @@ double trunk_lean_degrees(const std::vector<Vec3>& points) {
     const double above = centre.z - z0;
     if (above >= kLeanBandLow * h && above <= kLeanBandHigh * h) band.push_back(centre);
   }
+  return band;
+}
+
+}  // namespace
+
+double trunk_lean_degrees(const std::vector<Vec3>& points) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (points.empty()) return nan;
+  const TreeBase base = find_base(points);
+  const double h = base.height;
+  if (!(h > 0)) return nan;
+  const Vec3 b0 = base.low_centroid;
+  const double z0 = base.axis.z;
+
+  std::vector<Vec3> low;
+  std::vector<double> low_r;
+  for (const Vec3& p : points) {
+    if (p.z <= z0 + kBaseShare * h) {
+      low.push_back(p);
+      low_r.push_back(std::hypot(p.x - b0.x, p.y - b0.y));
+    }
+  }
+  const double w = std::max(h / kEnvelopeCells, 2 * median_of(low_r));
+
+  // Points of each slice from the top of the base region to the top of the band.
+  const double thick = h / kLeanSlices;
+  const int first = int(std::floor(kBaseShare * kLeanSlices));
+  const int last = int(std::ceil(kLeanBandHigh * kLeanSlices));
+  std::vector<std::vector<Vec3>> slices(std::size_t(last - first));
+  for (const Vec3& p : points) {
+    const int k = int(std::floor((p.z - z0) / thick));
+    if (k >= first && k < last) slices[std::size_t(k - first)].push_back(p);
+  }
+
+  // First from a vertical through b0; when that finds no trunk in the band (a trunk leaning
+  // so far that it leaves the window within the first slices, as the 45-degree first internode
+  // of some inferred grammars does), again along the line fitted to the lowest 5 %, which
+  // follows such a trunk but is swayed by roots or low stems, hence second.
+  Line vertical;
+  vertical.mean = b0;
+  std::vector<Vec3> band = track_trunk(slices, first, thick, z0, h, w, b0, vertical);
+  if (band.empty()) band = track_trunk(slices, first, thick, z0, h, w, b0, fit_line(low));
   // From b0 to the mean of the band's centres rather than the slope of a line through them:
   // where a trunk forks inside the band, the top centres follow the fork, and a slope, whose
   // lever is half the band, turned that into 20 degrees for the reconstruction of
