@@ -1,13 +1,19 @@
 // ramus compare A B [--seeds N] [--seed S] [--tree-index T] [--reconstruct bsg|flood] [--voxel V]
+//                   [--picture OUT.png]
 // Compares the skeletons of two sources -- grammars (.ramus, grown over N seeds), skeleton files
-// (.json) or scans (reconstructed) -- by the two-sample Kolmogorov-Smirnov distance of their
-// distributions of branch length, branching angle, azimuth, radius ratio, branch order, total
-// length, crown extent and height (docs/skeleton-inference.md, "Fidelity").
+// (.json) or scans (reconstructed). First the shape of B's trees against A: envelope IoU (with
+// the reconstruction's own as the reference line when A is a scan), pieces, axis-locked share,
+// height ratio and trunk lean (docs/shape-measures.md); then the two-sample Kolmogorov-Smirnov
+// distance of their distributions of branch length, branching angle, azimuth, radius ratio,
+// branch order, total length, crown extent and height (docs/skeleton-inference.md, "Fidelity").
 #include <cstdio>
+#include <filesystem>
 #include <memory>
 
 #include "cli/command.h"
-#include "cli/skeleton_source.h"
+#include "cli/compare_picture.h"
+#include "cli/compare_shape.h"
+#include "cli/compare_side.h"
 #include "infer/skeleton/branch_rules.h"
 #include "infer/skeleton/fidelity.h"
 
@@ -21,31 +27,63 @@ struct CompareArgs {
   std::uint64_t seed = 1;
   int tree_index = -1;
   ReconstructChoice reconstruct;  // scans: as `ramus infer --method skeleton` reconstructs them
+  std::string picture;
+  // Which options the user gave, to refuse those that do not apply to the sources.
+  bool given_seeds = false, given_scan_options = false;
 };
 
-skeleton_infer::Distributions measure_source(const std::string& path, const CompareArgs& args,
-                                             const GlobalOptions& global) {
+skeleton_infer::Distributions measure_side(const CompareSide& side) {
+  skeleton_infer::Distributions d;
+  for (const Skeleton& s : side.trees) {
+    try {
+      skeleton_infer::measure(s, d);
+    } catch (const skeleton_infer::ExtractError& e) {
+      throw UserError(side.path + ": invalid skeleton: " + e.what());
+    }
+  }
+  if (d.trees == 0) throw UserError(side.path + ": no tree with a segment to measure");
+  return d;
+}
+
+// Options that would be silently ignored are errors, so a user never believes they took effect.
+void check_options(const CompareArgs& args) {
+  const SourceKind ka = source_kind(args.a), kb = source_kind(args.b);
+  auto any = [&](SourceKind k) { return ka == k || kb == k; };
+  if (args.given_seeds && !any(SourceKind::Grammar)) {
+    throw UserError("--seeds and --seed grow grammars, and neither source is a grammar (.ramus)");
+  }
+  if (args.given_scan_options && !any(SourceKind::Scan)) {
+    throw UserError(
+        "--tree-index, --reconstruct and --voxel apply to scans, and neither source is a scan");
+  }
+  if (!args.picture.empty()) {
+    if (!any(SourceKind::Scan) && !any(SourceKind::Grammar)) {
+      throw UserError(
+          "--picture draws a scan or a grammar's trees, and both sources are skeleton "
+          "files (.json); use `ramus preview` on a grammar instead");
+    }
+    const std::string ext = std::filesystem::path(args.picture).extension().string();
+    if (ext != ".png") throw UserError("--picture writes a .png file, not " + args.picture);
+  }
+}
+
+int run_compare(const CompareArgs& args, const GlobalOptions& global) {
+  check_options(args);
   SkeletonSourceOptions so;
   so.seeds = args.seeds;
   so.first_seed = args.seed;
   so.tree_index = args.tree_index;
   so.quiet = global.quiet;
   so.reconstruct = args.reconstruct;
-  skeleton_infer::Distributions d;
-  for (const Skeleton& s : load_skeleton_source(path, so)) {
-    try {
-      skeleton_infer::measure(s, d);
-    } catch (const skeleton_infer::ExtractError& e) {
-      throw UserError(path + ": invalid skeleton: " + e.what());
-    }
-  }
-  if (d.trees == 0) throw UserError(path + ": no tree with a segment to measure");
-  return d;
-}
+  const CompareSide side_a = load_compare_side(args.a, so);
+  const CompareSide side_b = load_compare_side(args.b, so);
+  const skeleton_infer::Distributions a = measure_side(side_a);
+  const skeleton_infer::Distributions b = measure_side(side_b);
 
-int run_compare(const CompareArgs& args, const GlobalOptions& global) {
-  const skeleton_infer::Distributions a = measure_source(args.a, args, global);
-  const skeleton_infer::Distributions b = measure_source(args.b, args, global);
+  // The shape section comes first so that the branch-statistics table ends the output, as
+  // scripts that read it from its header to the end expect.
+  print_shape_report(measure_shapes(side_a, side_b));
+
   std::printf("%-16s %8s %8s %12s %12s %7s\n", "measure", "n(A)", "n(B)", "mean(A)", "mean(B)",
               "KS");
   double worst = 0;
@@ -55,6 +93,10 @@ int run_compare(const CompareArgs& args, const GlobalOptions& global) {
     worst = std::max(worst, c.ks);
   }
   std::printf("trees: A %zu, B %zu; largest KS %.4f\n", a.trees, b.trees, worst);
+  if (!args.picture.empty()) {
+    write_compare_picture(args.picture, side_a, side_b);
+    if (!global.quiet) std::fprintf(stderr, "ramus: wrote %s\n", args.picture.c_str());
+  }
   return 0;
 }
 
@@ -62,9 +104,11 @@ int run_compare(const CompareArgs& args, const GlobalOptions& global) {
 
 void add_compare(CLI::App& app, const GlobalOptions& global, std::function<int()>& run) {
   auto args = std::make_shared<CompareArgs>();
-  CLI::App* sub =
-      app.add_subcommand("compare", "compare two skeleton sources by Kolmogorov-Smirnov distances");
-  sub->add_option("A", args->a, "grammar (.ramus), skeleton (.json) or scan")->required();
+  CLI::App* sub = app.add_subcommand(
+      "compare",
+      "compare two skeleton sources: envelope IoU, tree shape and Kolmogorov-Smirnov distances");
+  sub->add_option("A", args->a, "the reference: scan, grammar (.ramus) or skeleton (.json)")
+      ->required();
   sub->add_option("B", args->b, "grammar (.ramus), skeleton (.json) or scan")->required();
   sub->add_option("--seeds", args->seeds, "trees grown from each grammar (default 10)")
       ->check(CLI::Range(1, 10000));
@@ -73,8 +117,21 @@ void add_compare(CLI::App& app, const GlobalOptions& global, std::function<int()
                   "the tree of a scan to use (default: the one with the most length)")
       ->check(CLI::NonNegativeNumber);
   add_reconstruct_choice_options(*sub, args->reconstruct, "--reconstruct", "scans: ");
-  sub->callback(
-      [args, &global, &run] { run = [args, &global] { return run_compare(*args, global); }; });
+  sub->add_option("--picture", args->picture,
+                  "also draw the scan, its reconstruction and the first 3 grown trees, front and "
+                  "side (.png)");
+  sub->footer(
+      "A is the reference. Printed: the envelope IoU of B's trees against A (a scan's own "
+      "reconstruction first, as the reference line), pieces, axis-locked share, height ratio "
+      "and trunk lean per tree (docs/shape-measures.md), then the KS distances "
+      "(docs/skeleton-inference.md, Fidelity). Options that do not apply to the sources are "
+      "errors.");
+  sub->callback([args, sub, &global, &run] {
+    args->given_seeds = sub->count("--seeds") + sub->count("--seed") > 0;
+    args->given_scan_options =
+        sub->count("--tree-index") + sub->count("--reconstruct") + sub->count("--voxel") > 0;
+    run = [args, &global] { return run_compare(*args, global); };
+  });
 }
 
 }  // namespace ramus::cli

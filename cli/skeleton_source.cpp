@@ -27,8 +27,11 @@ std::vector<Skeleton> grow_seeds(const std::string& path, const SkeletonSourceOp
   return out;
 }
 
-Skeleton reconstruct_scan(const std::string& path, const SkeletonSourceOptions& o) {
-  PointCloud cloud;
+}  // namespace
+
+ScanSource load_scan_source(const std::string& path, const SkeletonSourceOptions& o) {
+  ScanSource out;
+  PointCloud& cloud = out.cloud;
   try {
     cloud = read_point_cloud(path);
   } catch (const FormatError& e) {
@@ -62,23 +65,29 @@ Skeleton reconstruct_scan(const std::string& path, const SkeletonSourceOptions& 
                  path.c_str(), pick, r.trees.size(), r.trees[pick].size(),
                  o.reconstruct.method.c_str(), r.timings.total);
   }
-  return std::move(r.trees[pick]);
+  out.tree = std::move(r.trees[pick]);
+  return out;
 }
 
-}  // namespace
+SourceKind source_kind(const std::string& path) {
+  const std::string ext = std::filesystem::path(path).extension().string();
+  if (ext == ".ramus") return SourceKind::Grammar;
+  if (ext == ".json") return SourceKind::SkeletonFile;
+  return SourceKind::Scan;
+}
 
 std::vector<Skeleton> load_skeleton_source(const std::string& path,
                                            const SkeletonSourceOptions& options) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".ramus") return grow_seeds(path, options);
-  if (ext == ".json") {
+  const SourceKind kind = source_kind(path);
+  if (kind == SourceKind::Grammar) return grow_seeds(path, options);
+  if (kind == SourceKind::SkeletonFile) {
     try {
       return {read_skeleton_json(path)};
     } catch (const FormatError& e) {
       throw UserError(e.what());
     }
   }
-  return {reconstruct_scan(path, options)};
+  return {load_scan_source(path, options).tree};
 }
 
 }  // namespace ramus::cli

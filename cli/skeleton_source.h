@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "cli/reconstruct_choice.h"
+#include "core/point_cloud.h"
 #include "core/skeleton.h"
 
 namespace ramus::cli {
@@ -19,6 +20,17 @@ struct SkeletonSourceOptions {
   ReconstructChoice reconstruct;  // scans: how they are reconstructed
   bool quiet = false;
 };
+
+// What a path names, by its extension: .ramus a grammar, .json a skeleton, anything else a scan.
+enum class SourceKind { Grammar, SkeletonFile, Scan };
+SourceKind source_kind(const std::string& path);
+
+// A scan and its chosen reconstructed tree, for callers that need the points as well.
+struct ScanSource {
+  PointCloud cloud;
+  Skeleton tree;
+};
+ScanSource load_scan_source(const std::string& path, const SkeletonSourceOptions& options);
 
 // One skeleton per grown grammar seed; one for a skeleton file; the chosen tree of a scan.
 // Errors (unreadable files, grammars with errors, scans without a tree) are UserErrors.
