@@ -2,7 +2,8 @@
 // per-node rules (Eq. 4.11) and their clustering for a large skeleton.
 //   bench_skeleton_infer [NODES] [SEED]   a random tree of NODES nodes (default 100000): chains of
 //                                         1-6 segments between forks of 2-3 children
-// Prints the time of each stage (best of 3 runs) and the rule counts.
+// Prints the time of each stage (best of 3 runs) and the rule counts, for the clustered model and
+// for the scaffold model (the default of `ramus infer --method skeleton`).
 //   bench_skeleton_infer fidelity [--stations N] [--method bsg|flood] [--seeds K] [--no-tropism]
 //                        INPUT...
 //     the fidelity table of docs/skeleton-inference.md: per INPUT (a scan, or a grammar: its
@@ -31,6 +32,7 @@
 #include "infer/skeleton/branch_rules.h"
 #include "infer/skeleton/fidelity.h"
 #include "infer/skeleton/rule_clustering.h"
+#include "infer/skeleton/scaffold_grammar.h"
 #include "infer/skeleton/skeleton_grammar.h"
 #include "tests/support/harness.h"
 
@@ -200,10 +202,11 @@ int main(int argc, char** argv) {
   const std::size_t nodes = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 100000;
   const std::uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 1;
   const Skeleton s = random_tree(nodes, seed);
-  double t_extract = 1e300, t_cluster = 1e300, t_grammar = 1e300;
+  double t_extract = 1e300, t_cluster = 1e300, t_grammar = 1e300, t_scaffold = 1e300;
   BranchRules rules;
   std::vector<RuleGroup> groups;
   InferredGrammar g;
+  ScaffoldGrammar sg;
   for (int run = 0; run < 3; ++run) {
     auto t = std::chrono::steady_clock::now();
     rules = extract_branch_rules(s);
@@ -214,6 +217,9 @@ int main(int argc, char** argv) {
     t = std::chrono::steady_clock::now();
     g = infer_grammar(rules, GrammarOptions{});
     t_grammar = std::min(t_grammar, seconds_since(t));
+    t = std::chrono::steady_clock::now();
+    sg = infer_scaffold_grammar(s);
+    t_scaffold = std::min(t_scaffold, seconds_since(t));
   }
   std::size_t clusters = 0;
   for (const RuleGroup& x : groups) clusters += x.clusters.size();
@@ -224,5 +230,8 @@ int main(int argc, char** argv) {
   std::printf(
       "grammar (extract + cluster + budget + write): %.3f s, %zu productions, %zu alternatives\n",
       t_grammar, g.productions, g.alternatives);
+  std::printf("scaffold grammar (extract + scaffold + params + axiom + write): %.3f s, %zu axes, "
+              "%zu shoots, %zu bytes\n",
+              t_scaffold, sg.scaffold_axes, sg.buds, sg.text.size());
   return 0;
 }

@@ -1,8 +1,12 @@
-// ramus infer INPUT -o OUT.ramus --method skeleton [--max-rules N] [--clusters K]
-//                   [--max-order O] [--tree-index T] [--merge alpha,beta]
-//                   [--reconstruct bsg|flood] [--voxel V] [--write-skeleton S.json]
-// Skeleton -> clustered stochastic parametric L-system (docs/skeleton-inference.md). INPUT is a
-// scan (reconstructed first), a skeleton file (.json) or a grammar (.ramus, grown with --seed).
+// ramus infer INPUT -o OUT.ramus --method skeleton [--model scaffold|clustered]
+//                   [--limb-share S] [--max-rules N] [--clusters K] [--max-order O]
+//                   [--tree-index T] [--merge alpha,beta] [--reconstruct bsg|flood] [--voxel V]
+//                   [--write-skeleton S.json]
+// Skeleton -> parametric L-system (docs/skeleton-inference.md): by default the tree's scaffold
+// as measured with shoots grown from species-level params (scaffold_grammar.h); with
+// --model clustered, clustered stochastic rules for every internode (skeleton_grammar.h). INPUT
+// is a scan (reconstructed first), a skeleton file (.json) or a grammar (.ramus, grown with
+// --seed).
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -12,6 +16,7 @@
 #include "core/atomic_file.h"
 #include "formats/skeleton_json.h"
 #include "infer/merge/branch_merge.h"
+#include "infer/skeleton/scaffold_grammar.h"
 #include "infer/skeleton/skeleton_grammar.h"
 
 namespace ramus::cli {
@@ -19,6 +24,9 @@ namespace ramus::cli {
 namespace {
 
 struct SkeletonInferArgs {
+  std::string model = "scaffold";  // scaffold | clustered
+  double limb_share = 0.02;        // scaffold: --limb-share
+  std::vector<CLI::Option*> clustered_only, scaffold_only;
   int max_rules = 32;
   int clusters = 4;
   int max_order = 3;
@@ -53,6 +61,51 @@ merge::MergeOptions parse_merge(const std::string& text) {
   return o;
 }
 
+// Runs one model's inference and writes its text to the output; its errors name the input.
+template <class Infer>
+auto infer_and_write(const InferCommonArgs& common, const Infer& infer) {
+  try {
+    auto g = infer();
+    write_file_atomically(common.output, g.text);
+    return g;
+  } catch (const skeleton_infer::ExtractError& e) {
+    throw UserError(common.input + ": invalid skeleton: " + e.what());
+  } catch (const skeleton_infer::InferError& e) {
+    throw UserError(common.input + ": " + e.what());
+  } catch (const WriteError& e) {
+    throw UserError(e.what());
+  }
+}
+
+// The default model: the scaffold as measured and shoots grown from species-level params.
+int write_scaffold_grammar(const InferCommonArgs& common, const SkeletonInferArgs& a,
+                           const Skeleton& skeleton, const GlobalOptions& global) {
+  for (const CLI::Option* o : a.clustered_only) {
+    if (o->count() > 0) throw UserError(o->get_name() + " applies to --model clustered only");
+  }
+  skeleton_infer::ScaffoldGrammarOptions so;
+  so.scaffold.min_share = a.limb_share;
+  so.tropism = !a.no_tropism;
+  so.seed = common.seed;
+  so.source_name = std::filesystem::path(common.input).filename().string();
+  const skeleton_infer::ScaffoldGrammar g =
+      infer_and_write(common, [&] { return skeleton_infer::infer_scaffold_grammar(skeleton, so); });
+  if (!global.quiet) {
+    const skeleton_infer::SpeciesParams& p = g.params;
+    std::printf(
+        "%s: scaffold of %zu axes (%zu segments) and %zu shoots from %zu internodes; %zu "
+        "productions, derive %d\n",
+        common.output.c_str(), g.scaffold_axes, g.scaffold_segments, g.buds, g.internodes,
+        g.productions, g.steps);
+    std::printf(
+        "  branch angle %.1f (sd %.1f), kink %.1f, lateral side %.1f, lateral share %.3f, "
+        "elasticity %.4f (%zu pairs, R^2 %.2f)\n",
+        p.branch_angle, p.branch_angle_sd, p.kink_angle, p.lateral_side, p.lateral_share,
+        p.elasticity, g.tropism.pairs, g.tropism.r2);
+  }
+  return 0;
+}
+
 int run_skeleton_infer(const InferCommonArgs& common, const SkeletonInferArgs& a,
                        const GlobalOptions& global) {
   SkeletonSourceOptions so;
@@ -81,6 +134,10 @@ int run_skeleton_infer(const InferCommonArgs& common, const SkeletonInferArgs& a
       throw UserError(a.skeleton_out + ": " + e.what());
     }
   }
+  if (a.model == "scaffold") return write_scaffold_grammar(common, a, skeleton, global);
+  for (const CLI::Option* o : a.scaffold_only) {
+    if (o->count() > 0) throw UserError(o->get_name() + " applies to --model scaffold only");
+  }
   skeleton_infer::GrammarOptions go;
   go.max_rules = a.max_rules;
   go.cluster.max_clusters = a.clusters;
@@ -94,19 +151,8 @@ int run_skeleton_infer(const InferCommonArgs& common, const SkeletonInferArgs& a
                  : a.axis_ends == "shared" ? AxisEnds::shared
                                            : AxisEnds::automatic;
   go.source_name = std::filesystem::path(common.input).filename().string();
-  skeleton_infer::InferredGrammar g;
-  try {
-    g = skeleton_infer::infer_grammar(skeleton, go);
-  } catch (const skeleton_infer::ExtractError& e) {
-    throw UserError(common.input + ": invalid skeleton: " + e.what());
-  } catch (const skeleton_infer::InferError& e) {
-    throw UserError(common.input + ": " + e.what());
-  }
-  try {
-    write_file_atomically(common.output, g.text);
-  } catch (const WriteError& e) {
-    throw UserError(e.what());
-  }
+  const skeleton_infer::InferredGrammar g =
+      infer_and_write(common, [&] { return skeleton_infer::infer_grammar(skeleton, go); });
   if (!global.quiet) {
     std::printf(
         "%s: %zu productions, %zu alternatives from %zu internodes (%zu branch nodes), "
@@ -135,30 +181,50 @@ int run_skeleton_infer(const InferCommonArgs& common, const SkeletonInferArgs& a
 
 InferRunner add_infer_skeleton_options(CLI::App& cmd, const GlobalOptions& global) {
   auto a = std::make_shared<SkeletonInferArgs>();
-  cmd.add_option("--max-rules", a->max_rules,
-                 "skeleton: most stochastic alternatives in the grammar (default 32)")
-      ->check(CLI::Range(2, 1000));
-  cmd.add_option("--clusters", a->clusters,
-                 "skeleton: most clusters per order and arity, chosen by silhouette (default 4)")
-      ->check(CLI::Range(1, 64));
-  cmd.add_option("--max-order", a->max_order,
-                 "skeleton: branch orders from this one on share productions (default 3)")
-      ->check(CLI::Range(0, 100));
+  cmd.add_option("--model", a->model,
+                 "skeleton: scaffold (the trunk and main limbs as measured, shoots grown from "
+                 "species-level params; default) or clustered (every internode from clustered "
+                 "stochastic rules)")
+      ->check(CLI::IsMember({"scaffold", "clustered"}));
+  a->scaffold_only.push_back(
+      cmd.add_option("--limb-share", a->limb_share,
+                     "skeleton, scaffold: a lateral axis joins the scaffold when it carries at "
+                     "least this share of the tree's length (default 0.02)")
+          ->check(CLI::Range(0.0, 1.0)));
+  a->clustered_only.push_back(
+      cmd.add_option(
+             "--max-rules", a->max_rules,
+             "skeleton, clustered: most stochastic alternatives in the grammar (default 32)")
+          ->check(CLI::Range(2, 1000)));
+  a->clustered_only.push_back(
+      cmd.add_option("--clusters", a->clusters,
+                     "skeleton, clustered: most clusters per order and arity, chosen by "
+                     "silhouette (default 4)")
+          ->check(CLI::Range(1, 64)));
+  a->clustered_only.push_back(
+      cmd.add_option("--max-order", a->max_order,
+                     "skeleton, clustered: branch orders from this one on share productions "
+                     "(default 3)")
+          ->check(CLI::Range(0, 100)));
   cmd.add_option("--tree-index", a->tree_index,
                  "skeleton: the tree of the scan to use (default: the one with the most length)")
       ->check(CLI::NonNegativeNumber);
-  cmd.add_option("--calibrate", a->calibration_seeds,
-                 "skeleton: fit the tip hazards to the input's total length over N grown seeds "
-                 "(default 4; 0: off)")
-      ->check(CLI::Range(0, 100));
-  cmd.add_flag("--no-axis-budget", a->no_axis_budget,
-               "skeleton: end axes by a tip hazard per internode instead of a length budget per "
-               "axis");
-  cmd.add_option("--axis-ends", a->axis_ends,
-                 "skeleton: how budgeted axes end: own (tips and last branch nodes of their own), "
-                 "shared (one length model for every internode), auto (both grown, the closer "
-                 "to the input kept; default)")
-      ->check(CLI::IsMember({"auto", "own", "shared"}));
+  a->clustered_only.push_back(
+      cmd.add_option("--calibrate", a->calibration_seeds,
+                     "skeleton: fit the tip hazards to the input's total length over N grown seeds "
+                     "(default 4; 0: off)")
+          ->check(CLI::Range(0, 100)));
+  a->clustered_only.push_back(cmd.add_flag(
+      "--no-axis-budget", a->no_axis_budget,
+      "skeleton, clustered: end axes by a tip hazard per internode instead of a length budget "
+      "per axis"));
+  a->clustered_only.push_back(
+      cmd.add_option(
+             "--axis-ends", a->axis_ends,
+             "skeleton: how budgeted axes end: own (tips and last branch nodes of their own), "
+             "shared (one length model for every internode), auto (both grown, the closer "
+             "to the input kept; default)")
+          ->check(CLI::IsMember({"auto", "own", "shared"})));
   cmd.add_flag("--no-tropism", a->no_tropism,
                "skeleton: do not fit a gravitropism (every internode's turn drawn independently)");
   cmd.add_option("--merge", a->merge,

@@ -3,66 +3,20 @@
 #include <cmath>
 #include <numeric>
 
-#include "grammar/builtins.h"
+#include "compiler/turtle_frame.h"
 
 namespace ramus {
 
 namespace {
 
-constexpr double kRad = kPi / 180.0;
-
-struct State {
+// The turtle's frame (turtle_frame.h) and the rest of its state, saved by `[`.
+struct State : TurtleFrame {
   Vec3 pos;
-  Vec3 h{0, 0, 1}, l{-1, 0, 0}, u{0, -1, 0};
   double width = 1;
   double colour = 0;
   std::uint32_t node = kNoParent;  // the node the next segment starts from
   std::uint16_t order = 0;
 };
-
-// Keeps the frame orthonormal and right-handed (U = H x L) against rounding drift.
-void orthonormalize(State& t) {
-  t.h = normalized(t.h);
-  t.l = normalized(t.l - t.h * dot(t.l, t.h), Vec3{-1, 0, 0});
-  t.u = cross(t.h, t.l);
-}
-
-// Rotation of the pair (a, b) in their plane: a' = a cos + b sin, b' = b cos - a sin.
-void rotate_pair(Vec3& a, Vec3& b, double degrees) {
-  const double c = std::cos(degrees * kRad), s = std::sin(degrees * kRad);
-  const Vec3 a2 = a * c + b * s;
-  b = b * c - a * s;
-  a = a2;
-}
-
-// Rodrigues' rotation of v about unit axis k by `angle` radians.
-Vec3 rotate_about(const Vec3& v, const Vec3& k, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return v * c + cross(k, v) * s + k * (dot(k, v) * (1 - c));
-}
-
-// ABOP ch. 2.2: after each segment the heading bends towards the tropism vector T by
-// alpha = e |H x T| (radians), about the axis H x T.
-void apply_tropism(State& t, const Vec3& tropism, double elasticity) {
-  if (elasticity == 0) return;
-  const Vec3 axis = cross(t.h, tropism);
-  const double len = length(axis);
-  if (len < 1e-12) return;
-  const Vec3 k = axis / len;
-  const double alpha = elasticity * len;
-  t.h = rotate_about(t.h, k, alpha);
-  t.l = rotate_about(t.l, k, alpha);
-  orthonormalize(t);
-}
-
-// `$` (ABOP ch. 2): L = V x H / |V x H| with V opposite to gravity, U = H x L.
-void level(State& t) {
-  const Vec3 v{0, 0, 1};
-  const Vec3 l = cross(v, t.h);
-  if (length(l) < 1e-12) return;
-  t.l = normalized(l);
-  t.u = cross(t.h, t.l);
-}
 
 class Walker {
  public:
@@ -103,7 +57,7 @@ class Walker {
     if (t_.node == kNoParent) t_.node = add_node(i, kNoParent);
     t_.pos += t_.h * arg(i, g_.settings.step);
     t_.node = add_node(i, t_.node);
-    apply_tropism(t_, tropism_, g_.settings.elasticity);
+    t_.bend(tropism_, g_.settings.elasticity);
   }
   void organ(std::size_t i) {
     OrganAnchor a;
@@ -163,7 +117,7 @@ class Walker {
         rotate_pair(t_.h, t_.l, 180);
         break;
       case ir::TurtleOp::Level:
-        level(t_);
+        t_.level();
         break;
       case ir::TurtleOp::Push:
         stack_.push_back(t_);
@@ -189,7 +143,7 @@ class Walker {
       case ir::TurtleOp::None:
         break;
     }
-    if (op >= ir::TurtleOp::Left && op <= ir::TurtleOp::TurnAround) orthonormalize(t_);
+    if (op >= ir::TurtleOp::Left && op <= ir::TurtleOp::TurnAround) t_.orthonormalize();
     return i;
   }
 

@@ -38,8 +38,18 @@ double lean_degrees(const Skeleton& skeleton) {
   if (!segment_z_range(skeleton, lo, hi) || !(hi > lo)) {
     return std::numeric_limits<double>::quiet_NaN();
   }
-  // The envelope's sampling of a reference: a quarter of its cell.
-  return trunk_lean_degrees(sample_edges(skeleton, (hi - lo) / (kEnvelopeCells * kSamplesPerCell)));
+  // The envelope's sampling of a reference: a quarter of its cell. The trunk's foot is the
+  // lowest root that has a segment.
+  const std::vector<Vec3> samples =
+      sample_edges(skeleton, (hi - lo) / (kEnvelopeCells * kSamplesPerCell));
+  const Skeleton::Children children = skeleton.children();
+  const Vec3* foot = nullptr;
+  for (std::uint32_t r : skeleton.roots()) {
+    if (children.count(r) == 0) continue;
+    const Vec3& p = skeleton.nodes[r].position;
+    if (foot == nullptr || p.z < foot->z) foot = &p;
+  }
+  return foot ? trunk_lean_degrees(samples, *foot) : trunk_lean_degrees(samples);
 }
 
 TreeShape measure_tree_shape(const Skeleton& skeleton) {

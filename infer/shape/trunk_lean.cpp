@@ -83,27 +83,11 @@ std::vector<Vec3> track_trunk(const std::vector<std::vector<Vec3>>& slices, int 
   return band;
 }
 
-}  // namespace
-
-double trunk_lean_degrees(const std::vector<Vec3>& points) {
+// The lean of the trunk tracked from b0 through the slices of `points` above z0 (see the
+// header), in a window of horizontal radius w.
+double lean_from(const std::vector<Vec3>& points, const Vec3& b0, double z0, double h, double w,
+                 const std::vector<Vec3>& low) {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  if (points.empty()) return nan;
-  const TreeBase base = find_base(points);
-  const double h = base.height;
-  if (!(h > 0)) return nan;
-  const Vec3 b0 = base.low_centroid;
-  const double z0 = base.axis.z;
-
-  std::vector<Vec3> low;
-  std::vector<double> low_r;
-  for (const Vec3& p : points) {
-    if (p.z <= z0 + kBaseShare * h) {
-      low.push_back(p);
-      low_r.push_back(std::hypot(p.x - b0.x, p.y - b0.y));
-    }
-  }
-  const double w = std::max(h / kEnvelopeCells, 2 * median_of(low_r));
-
   // Points of each slice from the top of the base region to the top of the band.
   const double thick = h / kLeanSlices;
   const int first = int(std::floor(kBaseShare * kLeanSlices));
@@ -133,6 +117,46 @@ double trunk_lean_degrees(const std::vector<Vec3>& points) {
   if (!(d.z > 0)) return nan;
   constexpr double kDegrees = 180.0 / 3.14159265358979323846;
   return std::atan2(std::hypot(d.x, d.y), d.z) * kDegrees;
+}
+
+}  // namespace
+
+double trunk_lean_degrees(const std::vector<Vec3>& points) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  if (points.empty()) return nan;
+  const TreeBase base = find_base(points);
+  const double h = base.height;
+  if (!(h > 0)) return nan;
+  const Vec3 b0 = base.low_centroid;
+  const double z0 = base.axis.z;
+  std::vector<Vec3> low;
+  std::vector<double> low_r;
+  for (const Vec3& p : points) {
+    if (p.z <= z0 + kBaseShare * h) {
+      low.push_back(p);
+      low_r.push_back(std::hypot(p.x - b0.x, p.y - b0.y));
+    }
+  }
+  const double w = std::max(h / kEnvelopeCells, 2 * median_of(low_r));
+  return lean_from(points, b0, z0, h, w, low);
+}
+
+double trunk_lean_degrees(const std::vector<Vec3>& points, const Vec3& foot) {
+  const double nan = std::numeric_limits<double>::quiet_NaN();
+  std::vector<Vec3> above, low;
+  double top = foot.z;
+  for (const Vec3& p : points) {
+    if (p.z < foot.z) continue;
+    above.push_back(p);
+    top = std::max(top, p.z);
+  }
+  const double h = top - foot.z;
+  if (!(h > 0)) return nan;
+  for (const Vec3& p : above) {
+    if (p.z <= foot.z + kBaseShare * h) low.push_back(p);
+  }
+  // A skeleton's trunk is a line: the window of the envelope's cell.
+  return lean_from(above, foot, foot.z, h, h / kEnvelopeCells, low);
 }
 
 }  // namespace ramus::shape

@@ -29,4 +29,10 @@ inline constexpr int kLeanShifts = 3;         // mean-shift steps per slice
 // band).
 double trunk_lean_degrees(const std::vector<Vec3>& points);
 
+// The same from a known foot of the trunk (a skeleton's root): b0 is the foot, heights are
+// measured from it, points below it are left out (the whips of a weeping tree hang below its
+// root and put the centroid of the lowest 5 % among them: 33 degrees for a vertical trunk), and
+// the window is the envelope's cell, height / 32.
+double trunk_lean_degrees(const std::vector<Vec3>& points, const Vec3& foot);
+
 }  // namespace ramus::shape

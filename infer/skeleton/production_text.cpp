@@ -5,6 +5,12 @@
 #include <cstdint>
 #include <cstdio>
 
+#include "grammar/diagnostic.h"
+#include "grammar/format.h"
+#include "grammar/parser.h"
+#include "grammar/source.h"
+#include "infer/skeleton/infer_error.h"
+
 namespace ramus::skeleton_infer {
 
 // `clamp(normal(m, s), lo, hi)`, or the mean alone when the spread is nil.
@@ -190,6 +196,15 @@ std::string grammar_number(double v) {
     if (!s.empty() && s.back() == '.') s.pop_back();
   }
   return s;
+}
+
+std::string canonical_layout(const std::string& text) {
+  SourceManager sources;
+  DiagnosticSink sink;
+  const std::uint32_t id = sources.add("inferred.ramus", text);
+  const ast::File file = parse(sources, id, sink);
+  if (sink.has_errors()) throw InferError("internal error: the inferred grammar does not parse");
+  return format_file(file, sources);
 }
 
 }  // namespace ramus::skeleton_infer

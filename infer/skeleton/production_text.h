@@ -16,6 +16,10 @@ namespace ramus::skeleton_infer {
 // misread, "0" for zero.
 std::string grammar_number(double v);
 
+// What `ramus fmt` writes for an inferred grammar's text. Throws InferError when it does not
+// parse (an internal error: inference writes it).
+std::string canonical_layout(const std::string& text);
+
 // The observed range of internode lengths: a child's length is kept inside it, so that the
 // product of many ratios cannot run away from what the tree shows.
 struct LengthRange {

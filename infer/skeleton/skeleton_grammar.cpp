@@ -6,10 +6,6 @@
 #include <map>
 #include <optional>
 
-#include "grammar/diagnostic.h"
-#include "grammar/format.h"
-#include "grammar/parser.h"
-#include "grammar/source.h"
 #include "infer/skeleton/fidelity.h"
 #include "infer/skeleton/grown_trees.h"
 #include "infer/skeleton/production_text.h"
@@ -482,13 +478,7 @@ InferredGrammar infer_grammar(const BranchRules& extracted, const GrammarOptions
     out.tip_shift = options.axis_budget ? -shift / kBudgetShiftScale : shift;
   }
 
-  // Canonical layout: what `ramus fmt` would write.
-  SourceManager sources;
-  DiagnosticSink sink;
-  const std::uint32_t id = sources.add("inferred.ramus", text);
-  const ast::File file = parse(sources, id, sink);
-  if (sink.has_errors()) throw InferError("internal error: the inferred grammar does not parse");
-  out.text = format_file(file, sources);
+  out.text = canonical_layout(text);
   return out;
 }
 

@@ -85,3 +85,25 @@ TEST_CASE("trunk lean: undefined without height", "[shape]") {
   CHECK(std::isnan(shape::trunk_lean_degrees({})));
   CHECK(std::isnan(shape::trunk_lean_degrees({{0, 0, 1}, {1, 0, 1}})));
 }
+
+TEST_CASE("trunk lean: a skeleton is measured from its root, whips below it do not count",
+          "[shape]") {
+  // A vertical trunk of 10 with whips from 3 hanging 1.5 below its root, all on one side: from
+  // the lowest 5 % (the points rule) the start lies among the whip tips.
+  Skeleton s;
+  const std::uint32_t low = chain(s, {0, 0, 0}, {0, 0, 3}, 12);
+  chain(s, {0, 0, 3}, {0, 0, 10}, 20, low);
+  for (int k = 0; k < 6; ++k) {
+    const Vec3 out{2.0 + 0.2 * k, 0.3 * (k - 3), -1.5};
+    chain(s, {0, 0, 3}, out, 10, low);
+  }
+  // (1.5: where the whips leave the trunk they pass within the window.)
+  CHECK(shape::lean_degrees(s) == Approx(0).margin(2.0));
+  // The same samples without the root: the points rule, thrown off by the whips.
+  std::vector<Vec3> points;
+  for (const SkeletonNode& n : s.nodes) points.push_back(n.position);
+  CHECK(shape::trunk_lean_degrees(points) > 5);
+  CHECK(shape::trunk_lean_degrees(points, Vec3{0, 0, 0}) == Approx(0).margin(2.0));
+  // A leaning tree keeps its lean from the root.
+  CHECK(shape::lean_degrees(leaning_tree(20, 30)) == Approx(20).margin(0.5));
+}

@@ -42,8 +42,8 @@ TEST_CASE("infer skeleton cli: a real scan gives a grammar that checks and is fo
 TEST_CASE("infer skeleton cli: options, merge, and bad input", "[skeleton_infer]") {
   const std::string grammar = std::string(RAMUS_SOURCE_DIR) + "/examples/trees/conifer.ramus";
   const std::string out = skeleton_test::scratch("conifer_inferred.ramus").string();
-  auto r = run_ramus({"infer", grammar, "-o", out, "--method", "skeleton", "--max-rules", "6",
-                      "--clusters", "3", "--merge", "10,15"});
+  auto r = run_ramus({"infer", grammar, "-o", out, "--method", "skeleton", "--model",
+                      "clustered", "--max-rules", "6", "--clusters", "3", "--merge", "10,15"});
   INFO(r.out);
   REQUIRE(r.status == 0);
   CHECK(r.out.find("merged branches") != std::string::npos);
@@ -103,7 +103,7 @@ TEST_CASE("infer skeleton cli: reconstruction options, the written skeleton and 
   REQUIRE(from_json.status == 0);
   REQUIRE(from_scan.status == 0);
   // The same A side: identical tables (the progress line goes to stderr, merged in `out`).
-  auto table = [](const std::string& s) { return s.substr(s.find("measure")); };
+  auto table = [](const std::string& s) { return s.substr(s.find("\nmeasure ") + 1); };
   CHECK(table(from_json.out) == table(from_scan.out));
   // The skeleton file regrows the same grammar as the scan it came from.
   const std::string out2 = skeleton_test::scratch("rtwig_flood_json.ramus").string();
@@ -112,7 +112,7 @@ TEST_CASE("infer skeleton cli: reconstruction options, the written skeleton and 
   CHECK(a.substr(a.find('\n')) == b.substr(b.find('\n')));  // the header names the input
   // --voxel reaches the BSG reconstruction; bad values are usage errors.
   CHECK(run_ramus({"infer", data("rtwig_cloud.txt"), "-o", out, "--method", "skeleton", "--voxel",
-                   "0.02", "--calibrate", "1"})
+                   "0.02", "--model", "clustered", "--calibrate", "1"})
             .status == 0);
   CHECK(run_ramus({"infer", data("rtwig_cloud.txt"), "-o", out, "--method", "skeleton",
                    "--reconstruct", "poisson"})
