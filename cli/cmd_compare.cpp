@@ -1,5 +1,5 @@
 // ramus compare A B [--seeds N] [--seed S] [--tree-index T] [--reconstruct bsg|flood] [--voxel V]
-//                   [--picture OUT.png]
+//                   [--picture OUT.png [--picture-also C]...]
 // Compares the skeletons of two sources -- grammars (.ramus, grown over N seeds), skeleton files
 // (.json) or scans (reconstructed). First the shape of B's trees against A: envelope IoU (with
 // the reconstruction's own as the reference line when A is a scan), pieces, axis-locked share,
@@ -28,6 +28,7 @@ struct CompareArgs {
   int tree_index = -1;
   ReconstructChoice reconstruct;  // scans: as `ramus infer --method skeleton` reconstructs them
   std::string picture;
+  std::vector<std::string> picture_also;  // more grammars or skeletons drawn after B
   // Which options the user gave, to refuse those that do not apply to the sources.
   bool given_seeds = false, given_scan_options = false;
 };
@@ -56,11 +57,18 @@ void check_options(const CompareArgs& args) {
     throw UserError(
         "--tree-index, --reconstruct and --voxel apply to scans, and neither source is a scan");
   }
+  if (args.picture.empty() && !args.picture_also.empty())
+    throw UserError("--picture-also adds trees to --picture, and there is no --picture");
   if (!args.picture.empty()) {
     if (!any(SourceKind::Scan) && !any(SourceKind::Grammar)) {
       throw UserError(
           "--picture draws a scan or a grammar's trees, and both sources are skeleton "
           "files (.json); use `ramus preview` on a grammar instead");
+    }
+    for (const std::string& c : args.picture_also) {
+      if (source_kind(c) == SourceKind::Scan)
+        throw UserError("--picture-also draws a grammar's trees or a skeleton file, not a scan: " +
+                        c);
     }
     const std::string ext = std::filesystem::path(args.picture).extension().string();
     if (ext != ".png") throw UserError("--picture writes a .png file, not " + args.picture);
@@ -94,7 +102,11 @@ int run_compare(const CompareArgs& args, const GlobalOptions& global) {
   }
   std::printf("trees: A %zu, B %zu; largest KS %.4f\n", a.trees, b.trees, worst);
   if (!args.picture.empty()) {
-    write_compare_picture(args.picture, side_a, side_b);
+    std::vector<CompareSide> also;
+    for (const std::string& c : args.picture_also) also.push_back(load_compare_side(c, so));
+    std::vector<const CompareSide*> sides{&side_a, &side_b};
+    for (const CompareSide& s : also) sides.push_back(&s);
+    write_compare_picture(args.picture, sides);
     if (!global.quiet) std::fprintf(stderr, "ramus: wrote %s\n", args.picture.c_str());
   }
   return 0;
@@ -120,6 +132,9 @@ void add_compare(CLI::App& app, const GlobalOptions& global, std::function<int()
   sub->add_option("--picture", args->picture,
                   "also draw the scan, its reconstruction and the first 3 grown trees, front and "
                   "side (.png)");
+  sub->add_option("--picture-also", args->picture_also,
+                  "with --picture: also draw the first 3 trees of this grammar (or the tree of "
+                  "this skeleton file) after B's, in another colour (repeatable)");
   sub->footer(
       "A is the reference. Printed: the envelope IoU of B's trees against A (a scan's own "
       "reconstruction first, as the reference line), pieces, axis-locked share, height ratio "

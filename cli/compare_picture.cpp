@@ -26,6 +26,7 @@ constexpr Rgb kBackground{0.96f, 0.96f, 0.94f};
 constexpr Rgb kPointColour{0.25f, 0.42f, 0.62f};
 constexpr Rgb kReconstructionColour{0.62f, 0.22f, 0.14f};
 constexpr Rgb kTreeColour{0.40f, 0.29f, 0.18f};
+constexpr Rgb kOtherTreeColour{0.20f, 0.45f, 0.25f};
 constexpr Rgb kRuleColour{0.70f, 0.70f, 0.68f};
 
 // One column: scan points, or a skeleton, placed at its own base.
@@ -110,16 +111,18 @@ void draw_panel(Raster& r, const Panel& p, const Projection& v) {
 
 }  // namespace
 
-void write_compare_picture(const std::string& path, const CompareSide& a, const CompareSide& b) {
+void write_compare_picture(const std::string& path, const std::vector<const CompareSide*>& sides) {
   std::vector<Panel> panels;
-  for (const CompareSide* side : {&a, &b}) {
+  std::size_t grown = 0;  // sides of grown or given trees so far, for their colour
+  for (const CompareSide* side : sides) {
+    const Rgb colour =
+        side->cloud ? kReconstructionColour : (grown++ % 2 == 0 ? kTreeColour : kOtherTreeColour);
     if (side->cloud) panels.push_back({&*side->cloud, nullptr, kPointColour, {}});
     const std::size_t n = side->kind == SourceKind::Grammar
                               ? std::min(side->trees.size(), kPictureSeeds)
                               : side->trees.size();
     for (std::size_t i = 0; i < n; ++i) {
-      panels.push_back(
-          {nullptr, &side->trees[i], side->cloud ? kReconstructionColour : kTreeColour, {}});
+      panels.push_back({nullptr, &side->trees[i], colour, {}});
     }
   }
   // One scale for all: the widest half-width and the tallest height above a base, each the

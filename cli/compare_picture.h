@@ -5,6 +5,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "cli/compare_side.h"
 
@@ -13,9 +14,10 @@ namespace ramus::cli {
 // Grown trees drawn per grammar side.
 inline constexpr std::size_t kPictureSeeds = 3;
 
-// Columns: for each side, A then B: a scan gives its points and its reconstruction, a grammar
-// its first kPictureSeeds trees, a skeleton file its tree. Written atomically; throws WriteError
-// when the file cannot be written.
-void write_compare_picture(const std::string& path, const CompareSide& a, const CompareSide& b);
+// Columns: for each side in order (A, B, then any more): a scan gives its points and its
+// reconstruction, a grammar its first kPictureSeeds trees, a skeleton file its tree; the trees of
+// successive sides in alternating colours. Written atomically; throws WriteError when the file
+// cannot be written.
+void write_compare_picture(const std::string& path, const std::vector<const CompareSide*>& sides);
 
 }  // namespace ramus::cli

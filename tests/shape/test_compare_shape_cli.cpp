@@ -88,6 +88,22 @@ TEST_CASE("compare shape cli: a scan against a grammar prints IoU and shape per 
                                                      "--seeds", "3", "--picture", png2.string()});
   CHECK(again.out == r.out);
   CHECK(slurp(png2) == bytes);
+  // --picture-also adds a second grammar's first 3 trees (8 columns); the printed measures are
+  // still those of B.
+  const fs::path png3 = tmp.path / "cmp3.png";
+  const CliResult also =
+      run_ramus_split(tmp.path, {"compare", data("rtwig_cloud.txt"), kGrammar, "--seeds", "3",
+                                 "--picture", png3.string(), "--picture-also",
+                                 std::string(RAMUS_SOURCE_DIR) + "/examples/trees/conifer.ramus"});
+  INFO(also.err);
+  REQUIRE(also.status == 0);
+  CHECK(also.out == r.out);
+  const std::string bytes3 = slurp(png3);
+  REQUIRE(bytes3.size() > 1000);
+  const unsigned width3 =
+      (unsigned(std::uint8_t(bytes3[16])) << 24) | (unsigned(std::uint8_t(bytes3[17])) << 16) |
+      (unsigned(std::uint8_t(bytes3[18])) << 8) | unsigned(std::uint8_t(bytes3[19]));
+  CHECK(width3 == 8 * 320);
 }
 
 TEST_CASE("compare shape cli: a grammar against itself gives IoU 1 for every seed", "[shape]") {
@@ -119,6 +135,14 @@ TEST_CASE("compare shape cli: options that do not apply and bad input are errors
   CHECK(r.out.find("neither source is a scan") != std::string::npos);
   r = run_ramus({"compare", skel.string(), kGrammar, "--picture", (tmp.path / "x.jpg").string()});
   CHECK(r.status == 1);
+  // --picture-also without --picture, or naming a scan.
+  r = run_ramus({"compare", skel.string(), kGrammar, "--picture-also", kGrammar});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("no --picture") != std::string::npos);
+  r = run_ramus({"compare", skel.string(), kGrammar, "--picture", (tmp.path / "y.png").string(),
+                 "--picture-also", data("rtwig_cloud.txt")});
+  CHECK(r.status == 1);
+  CHECK(!fs::exists(tmp.path / "y.png"));
   // A skeleton against itself: IoU 1; without --seeds or scan options nothing is refused.
   r = run_ramus({"compare", skel.string(), skel.string()});
   INFO(r.out);
