@@ -1,6 +1,6 @@
 // Where a mesh's float vertices are measured from. Skeleton positions are doubles in world
-// coordinates; a mesh stores float32 vertices, whose spacing near 1e6 (UTM eastings and
-// northings) is 6-12 cm, so a georeferenced tree would snap to a coarse grid. Vertices are
+// coordinates; a mesh stores float32 vertices, whose spacing at UTM eastings and northings
+// (1e6-4e6) is 0.125-0.25 m, so a georeferenced tree would snap to a coarse grid. Vertices are
 // therefore written relative to a local origin chosen here in double precision, and every
 // writer records the origin (glTF: the root node's translation; OBJ, PLY: a comment).
 #pragma once
