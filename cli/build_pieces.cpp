@@ -14,6 +14,7 @@
 #include "backends/preview/preview.h"
 #include "cli/defines.h"
 #include "cli/grow_args.h"
+#include "cli/output_path.h"
 #include "compiler/grow.h"
 #include "core/atomic_file.h"
 #include "grammar/check.h"
@@ -51,10 +52,12 @@ void add_pieces_build_options(CLI::App* sub, PiecesBuildArgs& a) {
       ->check(CLI::Range(1, 100000))
       ->group(group);
   sub->add_flag("--wind", a.wind, "pieces: add a looping wind clip (glTF animation)")->group(group);
-  sub->add_option("--instance-buffer", a.instance_buffer,
-                  "pieces: also write the engine instance buffer (.bin) and its .json manifest")
+  output_path(sub->add_option(
+                  "--instance-buffer", a.instance_buffer,
+                  "pieces: also write the engine instance buffer (.bin) and its .json manifest"))
       ->group(group);
-  sub->add_option("--preview", a.preview, "pieces: also draw the posed trees (.png or .svg)")
+  output_path(
+      sub->add_option("--preview", a.preview, "pieces: also draw the posed trees (.png or .svg)"))
       ->group(group);
   sub->add_option("--pieces", a.block, "pieces: the pieces block (default: the first)")
       ->group(group);

@@ -1,8 +1,10 @@
-// ramus build FILE -o OUT.glb|.gltf|.obj|.ply [--target mesh] [--lod N] [--seed S] [-n N]
-//                  [-D name=value]... [--system NAME] [--pipe-exponent E] [--leaves quad|crossed]
-//                  [--leaf-scale K]
+// ramus build FILE -o OUT.glb|.gltf|.obj|.ply [--target mesh] [--lod N] [--lod-files] [--up y|z]
+//                  [--seed S] [-n N] [-D name=value]... [--system NAME] [--pipe-exponent E]
+//                  [--leaves quad|crossed] [--leaf-scale K]
 // Grows the grammar and writes its tree as a mesh (docs/mesh.md). glTF gets the levels of
-// detail LOD0..LOD N as separate meshes; OBJ and PLY hold one mesh, level N.
+// detail LOD0..LOD N as separate meshes switched by MSFT_lod; OBJ and PLY hold one mesh, level N.
+// --lod-files writes OUT_LOD0 .. OUT_LODN instead, one level per file, for engines without
+// MSFT_lod.
 // --target pieces writes skinned piece instances instead (build_pieces.h, docs/pieces.md).
 #include <cstdio>
 #include <filesystem>
@@ -14,6 +16,8 @@
 #include "cli/build_binary.h"
 #include "cli/build_pieces.h"
 #include "cli/grow_args.h"
+#include "cli/mesh_output.h"
+#include "cli/output_path.h"
 
 namespace ramus::cli {
 namespace {
@@ -23,6 +27,8 @@ struct BuildArgs {
   std::string output;
   std::string target = "mesh";
   int lod = 0;
+  bool lod_files = false;
+  std::string up;  // --up: empty for the format's default
   double pipe_exponent = 0;
   std::string leaves = "quad";
   double leaf_scale = 1;
@@ -39,7 +45,36 @@ void print_warnings(const mesh::MeshReport& report) {
     std::fprintf(stderr, "ramus: warning: %s\n", w.c_str());
 }
 
+// Options of the mesh target given with another target are mistakes, not silently ignored.
+void check_mesh_only_options(const BuildArgs& a) {
+  if (a.target == "mesh") return;
+  if (!a.up.empty()) throw UserError("--up applies to --target mesh only");
+  if (a.lod_files) throw UserError("--lod-files applies to --target mesh only");
+}
+
+// Writes the levels, each to its own file (--lod-files) or together; returns the triangles of
+// the finest level written.
+std::size_t write_levels(const std::vector<mesh::TreeMesh>& lods, const BuildArgs& a,
+                         mesh::UpAxis up, bool gltf) {
+  if (a.lod_files) {
+    for (std::size_t k = 0; k < lods.size(); ++k) {
+      const std::string path = lod_file_path(a.output, int(k));
+      if (gltf) {
+        mesh::write_gltf({lods[k]}, path);
+      } else {
+        mesh::write_openmesh(lods[k], path, up);
+      }
+    }
+  } else if (gltf) {
+    mesh::write_gltf(lods, a.output);
+  } else {
+    mesh::write_openmesh(lods.back(), a.output, up);
+  }
+  return gltf || a.lod_files ? lods.front().triangle_count() : lods.back().triangle_count();
+}
+
 int run_build(const BuildArgs& a, const GlobalOptions& global) {
+  check_mesh_only_options(a);
   if (a.target == "binary") return build_binary(a.grow, a.binary, a.output, global.quiet);
   if (a.target == "pieces") {
     PiecesBuildArgs p = a.pieces;
@@ -47,6 +82,10 @@ int run_build(const BuildArgs& a, const GlobalOptions& global) {
     return build_pieces(a.grow, p, a.output, global.quiet);
   }
   if (extension(a.output) == ".rmb") throw UserError("an .rmb output needs --target binary");
+  if (a.lod_files && a.lod == 0) throw UserError("--lod-files needs --lod N with N >= 1");
+  const std::string ext = extension(a.output);
+  const bool gltf = ext == ".glb" || ext == ".gltf";
+  const mesh::UpAxis up = mesh_up_axis(a.up, a.output);
   const std::optional<Skeleton> skeleton = grow_for_cli(a.grow);
   if (!skeleton) return 1;
   mesh::MeshOptions o;
@@ -54,30 +93,26 @@ int run_build(const BuildArgs& a, const GlobalOptions& global) {
   o.pipe_exponent = a.pipe_exponent;
   o.leaf_style = a.leaves == "crossed" ? mesh::LeafStyle::kCrossed : mesh::LeafStyle::kQuad;
   o.leaf_scale = a.leaf_scale;
-  const std::string ext = extension(a.output);
-  const bool gltf = ext == ".glb" || ext == ".gltf";
   mesh::MeshReport report;
   std::size_t triangles = 0;
   try {
-    if (gltf) {
+    std::vector<mesh::TreeMesh> lods;
+    if (gltf || a.lod_files) {
       o.lod_count = a.lod + 1;
-      const auto lods = mesh::build_tree_lods(*skeleton, o, &report);
-      print_warnings(report);
-      mesh::write_gltf(lods, a.output);
-      triangles = lods.front().triangle_count();
+      lods = mesh::build_tree_lods(*skeleton, o, &report);
     } else {
-      const mesh::TreeMesh m = mesh::build_tree_mesh(*skeleton, o, a.lod, &report);
-      print_warnings(report);
-      mesh::write_openmesh(m, a.output);
-      triangles = m.triangle_count();
+      lods.push_back(mesh::build_tree_mesh(*skeleton, o, a.lod, &report));
     }
+    print_warnings(report);
+    triangles = write_levels(lods, a, up, gltf);
   } catch (const mesh::MeshError& e) {
     throw UserError(e.what());
   }
   if (!global.quiet) {
     std::fprintf(stderr, "ramus: wrote %s (%zu nodes, %zu organs, %zu triangles at LOD%d)\n",
-                 a.output.c_str(), skeleton->size(), skeleton->organs.size(), triangles,
-                 gltf ? 0 : a.lod);
+                 a.lod_files ? lod_file_path(a.output, 0).c_str() : a.output.c_str(),
+                 skeleton->size(), skeleton->organs.size(), triangles,
+                 gltf || a.lod_files ? 0 : a.lod);
   }
   return 0;
 }
@@ -88,8 +123,9 @@ void add_build(CLI::App& app, const GlobalOptions& global, std::function<int()>&
   auto args = std::make_shared<BuildArgs>();
   CLI::App* sub = app.add_subcommand("build", "compile a grammar into an asset (a tree mesh)");
   add_grow_options(sub, args->grow);
-  sub->add_option("-o,--output", args->output,
-                  "output: .glb, .gltf (+ .bin), .obj (+ .mtl), .ply; .rmb with --target binary")
+  output_path(sub->add_option(
+                  "-o,--output", args->output,
+                  "output: .glb, .gltf (+ .bin), .obj (+ .mtl), .ply; .rmb with --target binary"))
       ->required()
       ->check(CLI::Validator(
           [](const std::string& p) -> std::string {
@@ -106,6 +142,10 @@ void add_build(CLI::App& app, const GlobalOptions& global, std::function<int()>&
                   "levels of detail: glTF gets LOD0..LOD N, OBJ/PLY level N; "
                   "--target pieces: the tessellation level the pieces are written at")
       ->check(CLI::Range(0, 7));
+  sub->add_flag("--lod-files", args->lod_files,
+                "write each level LOD0..LOD N to its own file OUT_LODk.ext (for engines without "
+                "glTF's MSFT_lod); needs --lod N >= 1");
+  add_up_option(sub, args->up);
   sub->add_option("--pipe-exponent", args->pipe_exponent,
                   "radii by the pipe model r^e = sum r_child^e (2 da Vinci, 2.5 Livny); "
                   "default: the turtle's widths")

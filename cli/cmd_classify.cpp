@@ -10,6 +10,7 @@
 #include <string>
 
 #include "cli/command.h"
+#include "cli/output_path.h"
 #include "core/atomic_file.h"
 #include "core/little_endian.h"
 #include "core/number_text.h"
@@ -111,11 +112,13 @@ void add_classify(CLI::App& app, const GlobalOptions& global, std::function<int(
       "classify", "wood/leaf separation of a scan (points with a wood property)");
   sub->add_option("scan", args->scan, "point cloud: .ply, .xyz/.txt/.asc/.csv, .las, .pcd")
       ->required();
-  sub->add_option("-o,--output", args->output,
-                  "output .ply: every point with `wood` (1 wood, 0 leaf) and `leaf_score`")
+  output_path(
+      sub->add_option("-o,--output", args->output,
+                      "output .ply: every point with `wood` (1 wood, 0 leaf) and `leaf_score`"))
       ->required()
       ->check(extension_check({".ply"}, "the output must end in .ply"));
-  sub->add_option("--wood", args->wood, "also write the wood points alone (.ply or .xyz)")
+  output_path(
+      sub->add_option("--wood", args->wood, "also write the wood points alone (.ply or .xyz)"))
       ->check(extension_check({".ply", ".xyz"}, "the wood output must end in .ply or .xyz"));
   sub->add_flag("--ascii", args->ascii, "write ascii PLY instead of binary");
   sub->add_option("--scale", args->scale,

@@ -14,6 +14,7 @@
 #include "cli/compare_picture.h"
 #include "cli/compare_shape.h"
 #include "cli/compare_side.h"
+#include "cli/output_path.h"
 #include "infer/skeleton/branch_rules.h"
 #include "infer/skeleton/fidelity.h"
 
@@ -129,9 +130,10 @@ void add_compare(CLI::App& app, const GlobalOptions& global, std::function<int()
                   "the tree of a scan to use (default: the one with the most length)")
       ->check(CLI::NonNegativeNumber);
   add_reconstruct_choice_options(*sub, args->reconstruct, "--reconstruct", "scans: ");
-  sub->add_option("--picture", args->picture,
-                  "also draw the scan, its reconstruction and the first 3 grown trees, front and "
-                  "side (.png)");
+  output_path(sub->add_option(
+      "--picture", args->picture,
+      "also draw the scan, its reconstruction and the first 3 grown trees, front and "
+      "side (.png)"));
   sub->add_option("--picture-also", args->picture_also,
                   "with --picture: also draw the first 3 trees of this grammar (or the tree of "
                   "this skeleton file) after B's, in another colour (repeatable)");

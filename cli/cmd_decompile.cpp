@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cli/command.h"
+#include "cli/output_path.h"
 #include "cli/read_file.h"
 #include "core/atomic_file.h"
 #include "formats/rmb/rmb.h"
@@ -78,7 +79,8 @@ void add_decompile(CLI::App& app, const GlobalOptions& global, std::function<int
   CLI::App* sub =
       app.add_subcommand("decompile", "turn a binary grammar (.rmb) back into .ramus text");
   sub->add_option("file", args->file, "the .rmb file")->required();
-  sub->add_option("-o,--output", args->output, "the .ramus file to write (default: stdout)");
+  output_path(
+      sub->add_option("-o,--output", args->output, "the .ramus file to write (default: stdout)"));
   sub->callback([args, &global, &run] {
     run = [args, &global] { return run_decompile(*args, global.quiet); };
   });

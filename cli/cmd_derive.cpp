@@ -12,6 +12,7 @@
 
 #include "cli/command.h"
 #include "cli/grow_args.h"
+#include "cli/output_path.h"
 #include "compiler/derive.h"
 #include "compiler/turtle.h"
 #include "core/atomic_file.h"
@@ -99,7 +100,8 @@ void add_derive(CLI::App& app, const GlobalOptions&, std::function<int()>& run) 
       ->check(CLI::NonNegativeNumber);
   auto* p = sub->add_flag("--print", args->print, "print the string in ABOP notation (default)");
   auto* s = sub->add_flag("--stats", args->stats, "print length, symbol counts, sums, time");
-  auto* k = sub->add_option("--skeleton", args->skeleton, "write the turtle's skeleton as JSON");
+  auto* k = output_path(
+      sub->add_option("--skeleton", args->skeleton, "write the turtle's skeleton as JSON"));
   p->excludes(s)->excludes(k);
   s->excludes(k);
   sub->callback([args, &run] { run = [args] { return run_derive(*args); }; });

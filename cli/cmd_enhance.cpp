@@ -19,6 +19,8 @@
 #include "backends/mesh/openmesh_writer.h"
 #include "backends/mesh/tree_mesh.h"
 #include "cli/command.h"
+#include "cli/mesh_output.h"
+#include "cli/output_path.h"
 #include "cli/scan_args.h"
 #include "compiler/derive.h"
 #include "compiler/pipeline.h"
@@ -129,7 +131,9 @@ int run_enhance_levels(const EnhanceArgs& a, const GlobalOptions& global) {
     mo.name = std::filesystem::path(a.scan).stem().string();  // not the output name: same bytes
     try {
       if (ends_with(a.output, ".obj")) {
-        mesh::write_openmesh(mesh::build_tree_mesh(world, mo, 0), a.output);
+        // The OBJ default (y up, as Blender reads it); enhance has no --up of its own.
+        mesh::write_openmesh(mesh::build_tree_mesh(world, mo, 0), a.output,
+                             mesh_up_axis("", a.output));
       } else {
         mesh::write_gltf(mesh::build_tree_lods(world, mo), a.output);
       }
@@ -207,7 +211,8 @@ void add_enhance(CLI::App& app, const GlobalOptions& global, std::function<int()
       "enhance",
       "super-resolution of a scan with its own voxel grammar, or (--levels) its L-rules iterated");
   sub->add_option("SCAN", args->scan, "point cloud (.ply .xyz .txt .asc .las .pcd)")->required();
-  sub->add_option("-o,--output", args->output, "output points, .ply or .xyz")->required();
+  output_path(sub->add_option("-o,--output", args->output, "output points, .ply or .xyz"))
+      ->required();
   sub->add_option("--grid", args->grid,
                   "voxel grid side of the input, a power of two (default 64)");
   sub->add_option("--seed", args->seed, "seed of the stochastic rule choice (default 1)");

@@ -5,6 +5,7 @@
 
 #include "cli/command.h"
 #include "cli/infer_methods.h"
+#include "cli/output_path.h"
 
 namespace ramus::cli {
 
@@ -15,7 +16,8 @@ void add_infer(CLI::App& app, const GlobalOptions& global, std::function<int()>&
                   "point cloud (.ply .xyz .txt .asc .las .pcd); --method skeleton also takes a "
                   "skeleton .json or a .ramus grammar")
       ->required();
-  sub->add_option("-o,--output", args->output, "the grammar to write (.ramus)")->required();
+  output_path(sub->add_option("-o,--output", args->output, "the grammar to write (.ramus)"))
+      ->required();
   sub->add_option("--method", args->method, "inference method (required)")
       ->required()
       ->check(CLI::IsMember({"wavelet", "skeleton"}));

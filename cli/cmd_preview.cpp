@@ -9,6 +9,7 @@
 #include "backends/mesh/tree_mesh.h"
 #include "backends/preview/preview.h"
 #include "cli/grow_args.h"
+#include "cli/output_path.h"
 
 namespace ramus::cli {
 namespace {
@@ -59,7 +60,7 @@ void add_preview(CLI::App& app, const GlobalOptions& global, std::function<int()
   CLI::App* sub =
       app.add_subcommand("preview", "draw a grammar's tree (front and side) as PNG or SVG");
   add_grow_options(sub, args->grow);
-  sub->add_option("-o,--output", args->output, "output picture: .png or .svg")
+  output_path(sub->add_option("-o,--output", args->output, "output picture: .png or .svg"))
       ->required()
       ->check(CLI::Validator(
           [](const std::string& p) -> std::string {

@@ -1,5 +1,5 @@
 // ramus propagate FILE -n K -o DIR [--seed S] [--jitter X] [--steps N] [--format
-// glb|gltf|obj|ply|rmb]
+// glb|gltf|obj|ply|rmb] [--up y|z]
 //                  [-D name=value]... [--system NAME] [--max-modules N]
 // Geometry propagation (Friedman & Stamos 2013, IV-C): K similar but distinct trees from one
 // grammar, tree k grown with its own seed and a perturbed axiom (infer/wavelet/
@@ -18,6 +18,8 @@
 #include "backends/mesh/openmesh_writer.h"
 #include "backends/mesh/tree_mesh.h"
 #include "cli/grow_args.h"
+#include "cli/mesh_output.h"
+#include "cli/output_path.h"
 #include "compiler/derive.h"
 #include "compiler/turtle.h"
 #include "core/atomic_file.h"
@@ -37,6 +39,7 @@ struct PropagateArgs {
   std::optional<int> steps;
   double jitter = 0.1;
   std::string format = "glb";
+  std::string up;  // --up of OBJ and PLY meshes; empty: the format's default
 };
 
 // Order-sensitive hash of a skeleton's geometry: equal trees hash equal, so two outputs that
@@ -76,7 +79,7 @@ Skeleton grow(const ir::Grammar& g, const PropagateArgs& a) {
 }
 
 std::size_t write_mesh(const Skeleton& skeleton, const std::string& path, const std::string& name,
-                       bool gltf) {
+                       bool gltf, mesh::UpAxis up) {
   mesh::MeshOptions o;
   o.name = name;
   mesh::MeshReport report;
@@ -87,7 +90,7 @@ std::size_t write_mesh(const Skeleton& skeleton, const std::string& path, const 
       return lods.front().triangle_count();
     }
     const mesh::TreeMesh m = mesh::build_tree_mesh(skeleton, o, 0, &report);
-    mesh::write_openmesh(m, path);
+    mesh::write_openmesh(m, path, up);
     return m.triangle_count();
   } catch (const mesh::MeshError& e) {
     throw UserError(path + ": " + e.what());
@@ -95,6 +98,7 @@ std::size_t write_mesh(const Skeleton& skeleton, const std::string& path, const 
 }
 
 int run_propagate(const PropagateArgs& a, const GlobalOptions& global) {
+  const mesh::UpAxis up = mesh_up_axis(a.up, "tree." + a.format);  // --up with glb or rmb fails
   std::optional<ir::Grammar> lowered = lower_for_cli(a.grow);
   if (!lowered) return 1;
   ir::Grammar& g = *lowered;
@@ -127,7 +131,7 @@ int run_propagate(const PropagateArgs& a, const GlobalOptions& global) {
     if (rmb) {
       write_file_atomically(path, encode_rmb(p.grammar));
     } else {
-      triangles = write_mesh(tree, path, name, a.format == "glb" || a.format == "gltf");
+      triangles = write_mesh(tree, path, name, a.format == "glb" || a.format == "gltf", up);
     }
     if (!global.quiet) {
       std::printf("%s: seed %llu, %zu axiom argument(s) perturbed, %zu nodes", path.c_str(),
@@ -149,7 +153,8 @@ void add_propagate(CLI::App& app, const GlobalOptions& global, std::function<int
   sub->add_option("-n,--count", args->count, "number of trees K")
       ->required()
       ->check(CLI::Range(1, 100000));
-  sub->add_option("-o,--output", args->dir, "output folder (tree_000.<format>, ...)")->required();
+  output_path(sub->add_option("-o,--output", args->dir, "output folder (tree_000.<format>, ...)"))
+      ->required();
   sub->add_option("--seed", args->seed, "propagation seed (default: the grammar's seed)");
   sub->add_option("--jitter", args->jitter,
                   "relative perturbation of the axiom's numeric arguments, in [0, 1) (default 0.1)")
@@ -159,6 +164,7 @@ void add_propagate(CLI::App& app, const GlobalOptions& global, std::function<int
   sub->add_option("--format", args->format,
                   "what to write per tree: a mesh (glb, gltf, obj, ply) or the grammar (rmb)")
       ->check(CLI::IsMember({"glb", "gltf", "obj", "ply", "rmb"}));
+  add_up_option(sub, args->up);
   sub->add_option("-D,--define", args->grow.defines, "override a param: name=value");
   sub->add_option("--system", args->grow.system, "lsystem block (default: the first)");
   sub->add_option("--max-modules", args->grow.max_modules, "stop with an error above this length");

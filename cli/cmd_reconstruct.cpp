@@ -1,5 +1,6 @@
 // ramus reconstruct SCAN -o OUT.glb|.gltf|.obj|.ply|.json [--trees one|all] [--voxel V]
 //                      [--no-leaves] [--seed S] [--method bsg|flood] [--merge ALPHA,BETA]
+//                      [--up y|z]
 // Reads a laser scan, reconstructs the skeletons of the trees in it (Livny et al. 2010; see
 // docs/reconstruction.md) and writes them as a mesh or as skeleton JSON.
 #include <algorithm>
@@ -11,6 +12,8 @@
 #include "backends/mesh/openmesh_writer.h"
 #include "backends/mesh/tree_mesh.h"
 #include "cli/command.h"
+#include "cli/mesh_output.h"
+#include "cli/output_path.h"
 #include "cli/reconstruct_choice.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
@@ -28,6 +31,7 @@ struct ReconstructArgs {
   bool no_leaves = false;
   std::uint64_t seed = 1;
   std::string leaves_in_scan = "keep";  // foliage in the scan: keep, remove or auto
+  std::string up;                       // --up of an OBJ or PLY mesh; empty: the default
 };
 
 // All trees as one forest (a Skeleton may have several roots).
@@ -47,7 +51,10 @@ Skeleton merge(const std::vector<Skeleton>& trees) {
   return out;
 }
 
-void write_output(const Skeleton& s, const std::string& path, const std::string& name) {
+// A scan's skeleton is in its world (UTM) coordinates: the mesh is built about a local origin
+// that the writers record (docs/mesh.md), and skeleton JSON keeps the doubles as they are.
+void write_output(const Skeleton& s, const std::string& path, const std::string& name,
+                  mesh::UpAxis up) {
   const std::string ext = std::filesystem::path(path).extension().string();
   if (ext == ".json") return write_skeleton_json(path, s);
   mesh::MeshOptions mo;
@@ -56,7 +63,7 @@ void write_output(const Skeleton& s, const std::string& path, const std::string&
     if (ext == ".glb" || ext == ".gltf") {
       mesh::write_gltf({mesh::build_tree_mesh(s, mo)}, path);
     } else {
-      mesh::write_openmesh(mesh::build_tree_mesh(s, mo), path);
+      mesh::write_openmesh(mesh::build_tree_mesh(s, mo), path, up);
     }
   } catch (const mesh::MeshError& e) {
     throw UserError(e.what());
@@ -64,6 +71,7 @@ void write_output(const Skeleton& s, const std::string& path, const std::string&
 }
 
 int run_reconstruct(const ReconstructArgs& a, const GlobalOptions& global) {
+  const mesh::UpAxis up = mesh_up_axis(a.up, a.output);  // a misplaced --up fails before the work
   PointCloud cloud;
   try {
     cloud = read_point_cloud(a.scan);
@@ -108,7 +116,7 @@ int run_reconstruct(const ReconstructArgs& a, const GlobalOptions& global) {
                    ms.nodes_before, ms.nodes_after, ms.vertical_merges, ms.horizontal_merges);
     }
   }
-  write_output(forest, a.output, std::filesystem::path(a.scan).stem().string());
+  write_output(forest, a.output, std::filesystem::path(a.scan).stem().string(), up);
   if (!global.quiet) {
     std::fprintf(stderr,
                  "ramus: wrote %s (%zu of %zu tree(s), %zu nodes, %zu leaves) from %zu points "
@@ -127,7 +135,8 @@ void add_reconstruct(CLI::App& app, const GlobalOptions& global, std::function<i
       app.add_subcommand("reconstruct", "scan -> tree skeletons -> mesh (Livny et al.)");
   sub->add_option("scan", args->scan, "point cloud: .ply, .xyz/.txt/.asc/.csv, .las, .pcd")
       ->required();
-  sub->add_option("-o,--output", args->output, "output: .glb, .gltf, .obj, .ply (mesh) or .json")
+  output_path(sub->add_option("-o,--output", args->output,
+                              "output: .glb, .gltf, .obj, .ply (mesh) or .json"))
       ->required()
       ->check(CLI::Validator(
           [](const std::string& p) -> std::string {
@@ -146,6 +155,7 @@ void add_reconstruct(CLI::App& app, const GlobalOptions& global, std::function<i
                   "leaves")
       ->check(CLI::IsMember({"auto", "keep", "remove"}));
   sub->add_option("--seed", args->seed, "seed of the synthesized leaves");
+  add_up_option(sub, args->up);
   add_reconstruct_choice_options(*sub, args->method, "--method", "");
   sub->add_option("--merge", args->merge_angles,
                   "merge branches: ALPHA,BETA degrees (collinear chains below ALPHA, sibling "

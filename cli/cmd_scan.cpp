@@ -9,6 +9,7 @@
 #include "backends/mesh/tree_mesh.h"
 #include "backends/scanner/scanner.h"
 #include "cli/grow_args.h"
+#include "cli/output_path.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
 
@@ -68,7 +69,7 @@ void add_scan(CLI::App& app, const GlobalOptions& global, std::function<int()>& 
   CLI::App* sub =
       app.add_subcommand("scan", "simulated laser scan of a grammar's tree (ground truth for tests)");
   add_grow_options(sub, args->grow);
-  sub->add_option("-o,--output", args->output, "output point cloud: .ply or .xyz")
+  output_path(sub->add_option("-o,--output", args->output, "output point cloud: .ply or .xyz"))
       ->required()
       ->check(CLI::Validator(
           [](const std::string& p) -> std::string {
@@ -86,7 +87,7 @@ void add_scan(CLI::App& app, const GlobalOptions& global, std::function<int()>& 
   sub->add_option("--max-range", args->max_range, "returns beyond this range are lost")
       ->check(CLI::NonNegativeNumber);
   sub->add_flag("--leaves", args->leaves, "scan the leaf cards too (default: wood only)");
-  sub->add_option("--truth", args->truth, "also write the tree's skeleton as JSON");
+  output_path(sub->add_option("--truth", args->truth, "also write the tree's skeleton as JSON"));
   sub->callback([args, &global, &run] { run = [args, &global] { return run_scan(*args, global); }; });
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 
 #include "cli/command.h"
+#include "cli/output_path.h"
 #include "cli/scan_args.h"
 #include "core/number_text.h"
 #include "formats/point_cloud_io.h"
@@ -84,7 +85,8 @@ void add_symmetrize(CLI::App& app, const GlobalOptions& global, std::function<in
       "symmetrize",
       "merge a scan with its reflection about the scanner plane through the root (preprocessing)");
   sub->add_option("SCAN", args->scan, "point cloud (.ply .xyz .txt .asc .las .pcd)")->required();
-  sub->add_option("-o,--output", args->output, "output points, .ply or .xyz")->required();
+  output_path(sub->add_option("-o,--output", args->output, "output points, .ply or .xyz"))
+      ->required();
   sub->add_option("--scanner", args->scanner, "scanner position x,y,z (default: from the file)");
   sub->add_option("--merge-distance", args->merge_distance,
                   "drop reflections this close to an input point (default: 1e-6 of the extent)")

@@ -12,6 +12,7 @@
 #include <memory>
 
 #include "cli/infer_methods.h"
+#include "cli/output_path.h"
 #include "cli/skeleton_source.h"
 #include "core/atomic_file.h"
 #include "formats/skeleton_json.h"
@@ -230,9 +231,10 @@ InferRunner add_infer_skeleton_options(CLI::App& cmd, const GlobalOptions& globa
   cmd.add_option("--merge", a->merge,
                  "skeleton: merge branches first, alpha,beta in degrees (vertical, horizontal)");
   add_reconstruct_choice_options(cmd, a->reconstruct, "--reconstruct", "skeleton, scans: ");
-  cmd.add_option("--write-skeleton", a->skeleton_out,
-                 "skeleton: also write the skeleton the grammar is inferred from (.json; for a "
-                 "scan, its reconstruction), to compare the grammar against it");
+  output_path(cmd.add_option(
+      "--write-skeleton", a->skeleton_out,
+      "skeleton: also write the skeleton the grammar is inferred from (.json); for a "
+      "scan, its reconstruction), to compare the grammar against it"));
   return [a, &global](const InferCommonArgs& common) {
     return run_skeleton_infer(common, *a, global);
   };

@@ -4,6 +4,7 @@
 #include <functional>
 
 #include "cli/command.h"
+#include "cli/output_path.h"
 #include "core/atomic_file.h"
 
 int main(int argc, char** argv) {
@@ -24,6 +25,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   try {
+    check_output_paths();  // before any work: a missing output directory fails at once
     return run ? run() : 2;
   } catch (const UserError& e) {
     std::fprintf(stderr, "ramus: error: %s\n", e.what());

@@ -1,21 +1,47 @@
 // The only file that includes tiny_gltf.h (its implementation lives in Debian's libtinygltf).
 // Every buffer view starts on a 4-byte boundary, attribute views carry the ARRAY_BUFFER target and
 // index views ELEMENT_ARRAY_BUFFER, and every accessor has exact min/max (taken from the float
-// values written), which is what the Khronos glTF-Validator checks.
+// values written), which is what the Khronos glTF-Validator checks. The z-up world becomes glTF's
+// y up here, in add_part and place_node, through backends/mesh/up_axis.h.
 #include "backends/mesh/gltf_writer.h"
 
 #include <tiny_gltf.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <sstream>
 
 #include "backends/mesh/gltf_buffer_builder.h"
 #include "backends/mesh/gltf_container.h"
 #include "backends/mesh/leaf_shape.h"
+#include "backends/mesh/up_axis.h"
 
 namespace ramus::mesh {
 namespace {
+
+// Positions and normals of the z-up mesh as glTF's y-up wants them (an exact permutation and sign
+// change of the floats, so nothing is rounded again).
+std::vector<Vec3f> y_up(const std::vector<Vec3f>& v) {
+  std::vector<Vec3f> out;
+  out.reserve(v.size());
+  for (const Vec3f& p : v) out.push_back(z_up_to_y_up(p));
+  return out;
+}
+
+// The local origin of a georeferenced mesh as the node's translation (glTF stores it as a JSON
+// double, so nothing is lost); nothing for a mesh at the world origin.
+void place_node(tinygltf::Node& node, const Vec3& origin) {
+  if (origin == Vec3{}) return;
+  const Vec3 t = z_up_to_y_up(origin);
+  node.translation = {t.x, t.y, t.z};
+}
+
+// MSFT_screencoverage of level k of n: the screen coverage below which an engine switches to the
+// next coarser level. Each level halves the radial segments and the leaf count, so it is fine
+// down to half the coverage of the level before; the coarsest level is never switched off (0:
+// culling a distant tree is the engine's own distance rule).
+double screen_coverage(int k, int n) { return k + 1 == n ? 0.0 : std::ldexp(0.5, -k); }
 
 class ModelBuilder : public GltfBufferBuilder {
  public:
@@ -67,8 +93,8 @@ class ModelBuilder : public GltfBufferBuilder {
     tinygltf::Primitive prim;
     prim.mode = TINYGLTF_MODE_TRIANGLES;
     prim.material = material;
-    prim.attributes["POSITION"] = add_float_attribute(part.positions, 3, TINYGLTF_TYPE_VEC3);
-    prim.attributes["NORMAL"] = add_float_attribute(part.normals, 3, TINYGLTF_TYPE_VEC3);
+    prim.attributes["POSITION"] = add_float_attribute(y_up(part.positions), 3, TINYGLTF_TYPE_VEC3);
+    prim.attributes["NORMAL"] = add_float_attribute(y_up(part.normals), 3, TINYGLTF_TYPE_VEC3);
     prim.attributes["TEXCOORD_0"] = add_float_attribute(part.uvs, 2, TINYGLTF_TYPE_VEC2);
     prim.attributes["_WIND"] = add_float_attribute(part.wind, 4, TINYGLTF_TYPE_VEC4);
     prim.indices = add_indices(part.indices, part.vertex_count());
@@ -87,8 +113,6 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
   const int leaf = any_leaves ? b.add_material("leaf", true) : -1;
   auto& model = b.model();
   const std::string tree = lods.front().name.substr(0, lods.front().name.rfind("_LOD"));
-  model.nodes.emplace_back();
-  model.nodes[0].name = tree;
   for (const TreeMesh& m : lods) {
     tinygltf::Mesh mesh;
     mesh.name = m.name;
@@ -97,16 +121,33 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
     if (mesh.primitives.empty()) throw MeshError("level of detail " + m.name + " has no geometry");
     model.meshes.push_back(std::move(mesh));
   }
-  if (lods.size() == 1) {
-    model.nodes[0].mesh = 0;
-  } else {
+  // Node 0, the scene's only node, shows LOD0. The coarser levels are nodes 1..n-1 that only
+  // MSFT_lod names: a viewer without the extension draws LOD0 alone instead of every level on
+  // top of each other, and one with it switches by the screen coverage hints. Each level's node
+  // carries the same translation, since MSFT_lod puts a level in its root's place.
+  tinygltf::Node root;
+  root.name = tree;
+  root.mesh = 0;
+  place_node(root, lods.front().origin);
+  model.nodes.push_back(root);
+  if (lods.size() > 1) {
+    tinygltf::Value::Array ids, coverage;
     for (std::size_t k = 0; k < lods.size(); ++k) {
-      tinygltf::Node child;
-      child.name = lods[k].name;
-      child.mesh = int(k);
-      model.nodes.push_back(child);
-      model.nodes[0].children.push_back(int(k + 1));
+      coverage.emplace_back(screen_coverage(int(k), int(lods.size())));
+      if (k == 0) continue;
+      tinygltf::Node level;
+      level.name = lods[k].name;
+      level.mesh = int(k);
+      place_node(level, lods[k].origin);
+      model.nodes.push_back(level);
+      ids.emplace_back(int(k));
     }
+    tinygltf::Value::Object ext, extras;
+    ext["ids"] = tinygltf::Value(std::move(ids));
+    extras["MSFT_screencoverage"] = tinygltf::Value(std::move(coverage));
+    model.nodes[0].extensions["MSFT_lod"] = tinygltf::Value(std::move(ext));
+    model.nodes[0].extras = tinygltf::Value(std::move(extras));
+    model.extensionsUsed.push_back("MSFT_lod");
   }
   tinygltf::Scene scene;
   scene.name = tree;

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "core/atomic_file.h"
+#include "core/number_text.h"
 
 namespace ramus::mesh {
 namespace {
@@ -19,11 +20,13 @@ using OMesh = OpenMesh::TriMesh_ArrayKernelT<>;
 constexpr OpenMesh::Vec3uc kBarkColour{92, 66, 44};
 constexpr OpenMesh::Vec3uc kLeafColour{70, 135, 45};
 
-void add_part(OMesh& om, const MeshPart& part, const OpenMesh::Vec3uc& colour) {
+Vec3f axes(const Vec3f& v, UpAxis up) { return up == UpAxis::kY ? z_up_to_y_up(v) : v; }
+
+void add_part(OMesh& om, const MeshPart& part, const OpenMesh::Vec3uc& colour, UpAxis up) {
   std::vector<OMesh::VertexHandle> vh(part.vertex_count());
   for (std::size_t i = 0; i < part.vertex_count(); ++i) {
-    const Vec3f& p = part.positions[i];
-    const Vec3f& n = part.normals[i];
+    const Vec3f p = axes(part.positions[i], up);
+    const Vec3f n = axes(part.normals[i], up);
     vh[i] = om.add_vertex(OMesh::Point(p.x, p.y, p.z));
     om.set_normal(vh[i], OMesh::Normal(n.x, n.y, n.z));
     om.set_texcoord2D(vh[i], OMesh::TexCoord2D(part.uvs[i][0], part.uvs[i][1]));
@@ -37,13 +40,13 @@ void add_part(OMesh& om, const MeshPart& part, const OpenMesh::Vec3uc& colour) {
   }
 }
 
-OMesh to_openmesh(const TreeMesh& mesh) {
+OMesh to_openmesh(const TreeMesh& mesh, UpAxis up) {
   OMesh om;
   om.request_vertex_normals();
   om.request_vertex_texcoords2D();
   om.request_vertex_colors();
-  add_part(om, mesh.bark, kBarkColour);
-  add_part(om, mesh.leaves, kLeafColour);
+  add_part(om, mesh.bark, kBarkColour, up);
+  add_part(om, mesh.leaves, kLeafColour, up);
   return om;
 }
 
@@ -56,11 +59,37 @@ std::string write_to_string(const OMesh& om, const std::string& ext, OpenMesh::I
   return os.str();
 }
 
-// Adds `mtllib` and the material switches: the bark faces come first, then the leaf faces.
-std::string add_materials(const std::string& obj, const std::string& mtl_name,
-                          std::size_t bark_faces, std::size_t leaf_faces) {
+// "up y\norigin X Y Z\n" (each line after `prefix`): what a reader needs to put the vertices
+// back into world coordinates. The origin is turned into the file's axes like the vertices, and
+// written in shortest round-trip form, so it keeps every digit of the double.
+std::string placement_comments(const std::string& prefix, const TreeMesh& mesh, UpAxis up) {
+  const Vec3 o = up == UpAxis::kY ? z_up_to_y_up(mesh.origin) : mesh.origin;
+  std::string s = prefix + (up == UpAxis::kY ? "up y\n" : "up z\n") + prefix + "origin ";
+  append_shortest(s, o.x + 0.0);  // + 0.0: never "-0"
+  s += ' ';
+  append_shortest(s, o.y + 0.0);
+  s += ' ';
+  append_shortest(s, o.z + 0.0);
+  return s + "\n";
+}
+
+// The PLY header with the placement comments after its format line (a header may hold comment
+// lines anywhere before end_header; the binary body is untouched).
+std::string add_ply_comments(const std::string& ply, const std::string& comments) {
+  const std::size_t format = ply.find("\nformat ");
+  const std::size_t at =
+      format == std::string::npos ? std::string::npos : ply.find('\n', format + 1);
+  if (at == std::string::npos) throw MeshError("OpenMesh wrote a PLY header without a format line");
+  return ply.substr(0, at + 1) + comments + ply.substr(at + 1);
+}
+
+// Adds the placement comments, `mtllib` and the material switches: the bark faces come first,
+// then the leaf faces.
+std::string add_materials(const std::string& obj, const std::string& header,
+                          const std::string& mtl_name, std::size_t bark_faces,
+                          std::size_t leaf_faces) {
   std::istringstream in(obj);
-  std::string out = "# ramus tree mesh\nmtllib " + mtl_name + "\n";
+  std::string out = "# ramus tree mesh\n" + header + "mtllib " + mtl_name + "\n";
   out.reserve(obj.size() + 64);
   std::string line;
   std::size_t faces = 0;
@@ -84,7 +113,7 @@ std::string obj_material_library() {
          "newmtl leaf\nKa 0 0 0\nKd 0.275 0.529 0.176\nKs 0.05 0.05 0.05\nNs 16\nd 1\nillum 2\n";
 }
 
-void write_openmesh(const TreeMesh& mesh, const std::string& path) {
+void write_openmesh(const TreeMesh& mesh, const std::string& path, UpAxis up) {
   if (mesh.bark.empty() && mesh.leaves.empty())
     throw MeshError("nothing to write: the tree has no geometry");
   const std::filesystem::path p(path);
@@ -95,17 +124,19 @@ void write_openmesh(const TreeMesh& mesh, const std::string& path) {
     opt += OpenMesh::IO::Options::Binary;
     opt += OpenMesh::IO::Options::LSB;
     opt += OpenMesh::IO::Options::VertexColor;
-    write_file_atomically(path, write_to_string(to_openmesh(mesh), ".ply", opt));
+    write_file_atomically(path,
+                          add_ply_comments(write_to_string(to_openmesh(mesh, up), ".ply", opt),
+                                           placement_comments("comment ", mesh, up)));
     return;
   }
   if (ext != ".obj") throw MeshError("unknown mesh file extension '" + ext + "': " + path);
   std::filesystem::path mtl = p;
   mtl.replace_extension(".mtl");
-  const std::string obj = write_to_string(to_openmesh(mesh), ".obj", opt);
+  const std::string obj = write_to_string(to_openmesh(mesh, up), ".obj", opt);
   write_file_atomically(mtl.string(), obj_material_library());
-  write_file_atomically(path,
-                        add_materials(obj, mtl.filename().string(), mesh.bark.triangle_count(),
-                                      mesh.leaves.triangle_count()));
+  write_file_atomically(
+      path, add_materials(obj, placement_comments("# ", mesh, up), mtl.filename().string(),
+                          mesh.bark.triangle_count(), mesh.leaves.triangle_count()));
 }
 
 }  // namespace ramus::mesh

@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "backends/mesh/builders.h"
+#include "backends/mesh/local_origin.h"
 
 namespace ramus::mesh {
 namespace {
@@ -72,6 +73,14 @@ TreeMesh build_level(const Skeleton& s, const PreparedSkeleton& p, const WindFie
   return mesh;
 }
 
+// The skeleton to mesh: `s` itself, or (for a georeferenced tree) its copy in `storage` moved
+// to the local origin in double precision, before any coordinate is narrowed to float.
+const Skeleton& local_skeleton(const Skeleton& s, const Vec3& origin, Skeleton& storage) {
+  if (origin == Vec3{}) return s;
+  storage = relative_to(s, origin);
+  return storage;
+}
+
 }  // namespace
 
 std::vector<std::string> MeshReport::warnings() const {
@@ -96,9 +105,14 @@ TreeMesh build_tree_mesh(const Skeleton& s, const MeshOptions& options, int lod,
   check_options(options, lod);
   MeshReport local;
   MeshReport& r = report ? *report : local;
-  const PreparedSkeleton p = prepare_skeleton(s, options, r);
-  const WindField wind = make_wind_field(s, p);
-  return build_level(s, p, wind, options, lod, r);
+  const Vec3 origin = local_origin(s);
+  Skeleton storage;
+  const Skeleton& at_origin = local_skeleton(s, origin, storage);
+  const PreparedSkeleton p = prepare_skeleton(at_origin, options, r);
+  const WindField wind = make_wind_field(at_origin, p);
+  TreeMesh mesh = build_level(at_origin, p, wind, options, lod, r);
+  mesh.origin = origin;
+  return mesh;
 }
 
 std::vector<TreeMesh> build_tree_lods(const Skeleton& s, const MeshOptions& options,
@@ -106,11 +120,16 @@ std::vector<TreeMesh> build_tree_lods(const Skeleton& s, const MeshOptions& opti
   check_options(options, 0);
   MeshReport local;
   MeshReport& r = report ? *report : local;
-  const PreparedSkeleton p = prepare_skeleton(s, options, r);
-  const WindField wind = make_wind_field(s, p);
+  const Vec3 origin = local_origin(s);
+  Skeleton storage;
+  const Skeleton& at_origin = local_skeleton(s, origin, storage);
+  const PreparedSkeleton p = prepare_skeleton(at_origin, options, r);
+  const WindField wind = make_wind_field(at_origin, p);
   std::vector<TreeMesh> lods;
-  for (int k = 0; k < options.lod_count; ++k)
-    lods.push_back(build_level(s, p, wind, options, k, r));
+  for (int k = 0; k < options.lod_count; ++k) {
+    lods.push_back(build_level(at_origin, p, wind, options, k, r));
+    lods.back().origin = origin;
+  }
   return lods;
 }
 

@@ -42,6 +42,10 @@ struct TreeMesh {
   // Material "leaf": alpha-masked cards. Every card face is 4 consecutive vertices with UVs
   // (0,0) (1,0) (0,1) (1,1) and 2 triangles; each card has a front and a back face.
   MeshPart leaves;
+  // World position (double, z up) of the vertices' (0, 0, 0): zero for trees near the origin,
+  // a local origin for georeferenced ones (backends/mesh/local_origin.h). World position of a
+  // vertex = origin + vertex; writers record it.
+  Vec3 origin;
   std::size_t triangle_count() const { return bark.triangle_count() + leaves.triangle_count(); }
 };
 

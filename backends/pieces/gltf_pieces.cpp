@@ -3,6 +3,10 @@
 // 4-byte boundaries, vertex views with the ARRAY_BUFFER target, index views ELEMENT_ARRAY_BUFFER,
 // inverse bind matrices, animation and instance data in views without a target or stride, exact
 // min/max on every float vertex accessor, and skin weights that sum to one in float.
+// glTF is y up; the pieces are assembled in ramus's z-up world. Every position, normal, rotation
+// and matrix is turned as it enters the model (y_up, y_up_quat, matrices: through
+// backends/mesh/up_axis.h): vertices and points turn by R, transforms are conjugated R M R^-1,
+// so skinning, instancing and the wind clip give the z-up result turned by R.
 #include "backends/pieces/gltf_pieces.h"
 
 #include <algorithm>
@@ -13,6 +17,7 @@
 #include <sstream>
 
 #include "backends/mesh/gltf_buffer_builder.h"
+#include "backends/mesh/up_axis.h"
 
 namespace ramus::pieces {
 namespace {
@@ -67,10 +72,18 @@ std::string node_safe(const std::string& s) {
   return out;
 }
 
-std::array<float, 4> unit_quat(const Quat& q) {
+// A rotation of the z-up world as glTF's y-up (x, y, z, w), normalized.
+std::array<double, 4> y_up_quat(const Quat& q) {
   const Quat n = q.normalized();
-  return {float(n.x), float(n.y), float(n.z), float(n.w)};
+  return mesh::z_up_to_y_up_quaternion(n.x, n.y, n.z, n.w);
 }
+
+std::array<float, 4> unit_quat(const Quat& q) {
+  const std::array<double, 4> n = y_up_quat(q);
+  return {float(n[0]), float(n[1]), float(n[2]), float(n[3])};
+}
+
+Vec3 y_up(const Vec3& v) { return mesh::z_up_to_y_up(v); }
 
 class Builder : public mesh::GltfBufferBuilder {
  public:
@@ -99,11 +112,12 @@ class Builder : public mesh::GltfBufferBuilder {
     return accessor(v, TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, s.size() / 4, TINYGLTF_TYPE_VEC4);
   }
 
+  // Transforms of the z-up world (inverse bind and skinning matrices), conjugated into y up.
   int matrices(const std::vector<Mat4>& ms) {
     std::vector<float> f;
     f.reserve(ms.size() * 16);
     for (const Mat4& m : ms)
-      for (double x : m.m) f.push_back(float(x));
+      for (double x : mesh::z_up_to_y_up_matrix(m.m)) f.push_back(float(x));
     return floats(f, 16, TINYGLTF_TYPE_MAT4, 0, false);
   }
 
@@ -151,8 +165,9 @@ struct SkinnedVertices {
   // Appends vertex v of `m` at `position` with `normal`, its joints offset by `bone_offset`.
   void add(const PieceMesh& m, std::size_t v, const Vec3& position, const Vec3& normal,
            std::uint32_t bone_offset) {
-    for (int c = 0; c < 3; ++c) pos.push_back(float(position[c]));
-    const Vec3 n = normalized(normal);
+    const Vec3 p = y_up(position);
+    for (int c = 0; c < 3; ++c) pos.push_back(float(p[c]));
+    const Vec3 n = y_up(normalized(normal));
     for (int c = 0; c < 3; ++c) nrm.push_back(float(n[c]));
     uv.push_back(m.uvs.at(v)[0]);
     uv.push_back(m.uvs.at(v)[1]);
@@ -228,9 +243,10 @@ void add_bone_nodes(Builder& b, const Forest& forest, const PiecesLayout& layout
       n.name = "t" + std::to_string(k) + "_p" + std::to_string(bone.piece) + "_" +
                node_safe(set.types[piece.type].joints[bone.joint].name);
       const Trs& t = layout.bone_local[g];
-      n.translation = {t.t.x, t.t.y, t.t.z};
-      const Quat q = t.r.normalized();
-      n.rotation = {q.x, q.y, q.z, q.w};
+      const Vec3 tt = y_up(t.t);
+      n.translation = {tt.x, tt.y, tt.z};
+      const std::array<double, 4> q = y_up_quat(t.r);
+      n.rotation = {q[0], q[1], q[2], q[3]};
       n.scale = {t.s, t.s, t.s};
       nodes.push_back(n);
       const std::uint32_t parent = layout.bone_parent[g];
@@ -431,7 +447,8 @@ void build_instanced(Builder& b, const PieceSet& set, const Forest& forest,
       const OutputInstance& inst = layout.instances[layout.by_type[i]];
       // The rigid placement of the piece: its root joint's world transform (bind pose identity).
       const Trs& w = layout.bone_world[inst.bone_offset];
-      tr.insert(tr.end(), {float(w.t.x), float(w.t.y), float(w.t.z)});
+      const Vec3 wt = y_up(w.t);
+      tr.insert(tr.end(), {float(wt.x), float(wt.y), float(wt.z)});
       const auto q = unit_quat(w.r);
       rot.insert(rot.end(), q.begin(), q.end());
       scl.insert(scl.end(), {float(w.s), float(w.s), float(w.s)});

@@ -7,6 +7,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "backends/mesh/up_axis.h"
 #include "core/atomic_file.h"
 
 namespace ramus::pieces {
@@ -83,8 +84,9 @@ InstanceBufferBytes encode_instance_buffer(const PieceSet& set, const Forest& fo
     put_u32(b, r.count);
   }
   pad_to(b, 16);
+  // In the glTF file's y-up frame, since the bones skin that file's piece meshes.
   for (const Mat4& m : layout.skinning)
-    for (double x : m.m) put_f32(b, float(x));
+    for (double x : mesh::z_up_to_y_up_matrix(m.m)) put_f32(b, float(x));
   for (std::uint32_t i : layout.by_type) {
     const OutputInstance& inst = layout.instances[i];
     put_u32(b, inst.bone_offset);

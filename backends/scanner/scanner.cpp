@@ -134,7 +134,8 @@ ScanResult scan_skeleton(const Skeleton& skeleton, const ScanOptions& o) {
   std::vector<std::uint32_t> indices;
   auto append = [&](const mesh::MeshPart& part) {
     const auto base = std::uint32_t(vertices.size());
-    for (const Vec3f& p : part.positions) vertices.push_back(Vec3(p));
+    // Back to world coordinates in double: a georeferenced tree is meshed about a local origin.
+    for (const Vec3f& p : part.positions) vertices.push_back(m.origin + Vec3(p));
     for (std::uint32_t i : part.indices) indices.push_back(base + i);
   };
   append(m.bark);

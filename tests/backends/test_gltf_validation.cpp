@@ -72,6 +72,14 @@ TEST_CASE("written glTF files pass the Khronos validator with no errors or warni
   files.push_back(dir / "bare.glb");
   write_gltf(tree(12, 20000, 2, LeafStyle::kQuad), (dir / "large.glb").string());
   files.push_back(dir / "large.glb");
+  // A georeferenced tree: translated root and level nodes (MSFT_lod with 3 levels).
+  Skeleton geo = testing::synthetic_tree(13, 400);
+  for (SkeletonNode& n : geo.nodes) n.position += Vec3{1180000.37, 2860000.81, 312.4};
+  for (OrganAnchor& a : geo.organs) a.position += Vec3{1180000.37, 2860000.81, 312.4};
+  MeshOptions geo_options;
+  geo_options.lod_count = 3;
+  write_gltf(build_tree_lods(geo, geo_options), (dir / "geo.glb").string());
+  files.push_back(dir / "geo.glb");
   std::string out;
   const int code = validate(files, out);
   INFO(out);

@@ -1,13 +1,14 @@
 // The glTF encodings of a pieces forest, read back: the file's own data (node TRS, skins,
 // inverse bind matrices, JOINTS_0/WEIGHTS_0, instance attributes) must put every vertex where
-// the back end's skinning puts it, with the layout docs/pieces.md promises; every file passes
-// the Khronos glTF-Validator.
+// the back end's skinning puts it, turned from ramus's z up into glTF's y up, with the layout
+// docs/pieces.md promises; every file passes the Khronos glTF-Validator.
 #include <tiny_gltf.h>
 
 #include <cstring>
 #include <map>
 #include <set>
 
+#include "backends/mesh/up_axis.h"
 #include "backends/pieces/gltf_pieces.h"
 #include "backends/pieces/output_layout.h"
 #include "backends/pieces/output_posed_mesh.h"
@@ -123,6 +124,10 @@ Vec3 skin_vertex(const tinygltf::Model& m, const std::vector<Mat4>& world, const
 
 double tree_scale(const PieceSet& set) { return set.rim_radius * 10; }
 
+// What the file should hold for a point or a transform of the z-up world.
+Vec3 y_up(const Vec3& v) { return mesh::z_up_to_y_up(v); }
+Mat4 y_up(const Mat4& m) { return Mat4{mesh::z_up_to_y_up_matrix(m.m)}; }
+
 }  // namespace
 
 TEST_CASE("canonical glTF: shared meshes, one skin per piece on its window of bone nodes",
@@ -163,8 +168,8 @@ TEST_CASE("canonical glTF: shared meshes, one skin per piece on its window of bo
     CHECK(it->second == skin.inverseBindMatrices);
     for (std::size_t j = 0; j < type.joints.size(); ++j) {
       const Mat4 ibm = read_matrix(m, skin.inverseBindMatrices, j);
-      for (int k = 0; k < 16; ++k)
-        CHECK(ibm.m[k] == Approx(type.joints[j].inverse_bind.m[k]).margin(1e-5));
+      const Mat4 want = y_up(type.joints[j].inverse_bind);
+      for (int k = 0; k < 16; ++k) CHECK(ibm.m[k] == Approx(want.m[k]).margin(1e-5));
     }
     CHECK(n.extras.Get("boneOffset").GetNumberAsInt() == int(inst.bone_offset));
     const tinygltf::Value& tiles = n.extras.Get("tiles");
@@ -175,7 +180,7 @@ TEST_CASE("canonical glTF: shared meshes, one skin per piece on its window of bo
     const Tree& tree = f.trees[inst.tree];
     const SkinnedPiece expect = skin_piece(set, tree, bone_world(tree, tree.pose), inst.piece, 0);
     for (std::size_t v = 0; v < expect.positions.size(); ++v)
-      worst = std::max(worst, distance(skin_vertex(m, world, n, v), expect.positions[v]));
+      worst = std::max(worst, distance(skin_vertex(m, world, n, v), y_up(expect.positions[v])));
   }
   CHECK(ibm_of_mesh.size() == used_types.size());
   CHECK(worst < 1e-4 * tree_scale(set));
@@ -205,7 +210,8 @@ TEST_CASE("flattened glTF: one mesh, one skin, one draw call, the same posed ver
           posed.bark.positions.size());
   double worst = 0;
   for (std::size_t v = 0; v < posed.bark.positions.size(); ++v)
-    worst = std::max(worst, distance(skin_vertex(m, world, n, v), Vec3(posed.bark.positions[v])));
+    worst =
+        std::max(worst, distance(skin_vertex(m, world, n, v), y_up(Vec3(posed.bark.positions[v]))));
   CHECK(worst < 1e-4 * tree_scale(set));
 }
 
@@ -245,7 +251,7 @@ TEST_CASE("gpu-instancing glTF: one instanced node per piece type, no skins, not
       t.s = read(m, scl, i, 0);
       const Trs& w = layout.bone_world[inst.bone_offset];
       const Vec3 probe{0.3, -0.2, 1.0};
-      CHECK(distance(t.point(probe), w.point(probe)) < 1e-4 * tree_scale(set));
+      CHECK(distance(t.point(y_up(probe)), y_up(w.point(probe))) < 1e-4 * tree_scale(set));
       const std::size_t first = std::size_t(read(m, tile, i, 0));
       for (std::uint32_t q = 0; q < inst.tile_count; ++q)
         CHECK(read(m, table, first + q, 0) == layout.tiles[inst.tile_offset + q]);
@@ -260,7 +266,8 @@ TEST_CASE("gpu-instancing glTF: one instanced node per piece type, no skins, not
   REQUIRE(m.accessors.at(bones).count == layout.bone_count());
   for (std::size_t g = 0; g < layout.bone_count(); g += 7) {
     const Mat4 b = read_matrix(m, bones, g);
-    for (int k = 0; k < 16; ++k) CHECK(b.m[k] == Approx(layout.skinning[g].m[k]).margin(1e-4));
+    const Mat4 want = y_up(layout.skinning[g]);
+    for (int k = 0; k < 16; ++k) CHECK(b.m[k] == Approx(want.m[k]).margin(1e-4));
   }
 }
 

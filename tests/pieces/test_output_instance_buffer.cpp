@@ -1,9 +1,11 @@
 // The engine-ready instance buffer read back by an independent reader written from
 // docs/instance-buffer.md alone (byte offsets, little-endian), checked against the forest:
 // header, draw ranges per piece type, skinning matrices, instance records, tiles; a CPU
-// skinning shader fed only the buffer puts the vertices where the back end does.
+// skinning shader fed only the buffer puts the vertices where the back end does, in the y-up
+// frame of the glTF piece meshes it skins.
 #include <cstring>
 
+#include "backends/mesh/up_axis.h"
 #include "backends/pieces/output_instance_buffer.h"
 #include "core/atomic_file.h"
 #include "tests/pieces/output_fixture.h"
@@ -166,14 +168,16 @@ TEST_CASE("instance buffer: a skinning shader fed only the buffer reproduces the
     const PieceMesh& mesh = set.types[rec.type].lods[0];
     const SkinnedPiece expect = skin_piece(set, tree, bone_world(tree, tree.pose), piece, 0);
     for (std::size_t v = 0; v < mesh.positions.size(); ++v) {
-      // Section 4.3: the instance's bone offset is added to the piece-local blend indices.
+      // Section 4.3: the instance's bone offset is added to the piece-local blend indices. The
+      // vertex is the glTF file's, y up.
+      const Vec3 vertex = mesh::z_up_to_y_up(mesh.positions[v]);
       Vec3 p{0, 0, 0};
       for (int s = 0; s < 4; ++s) {
         if (mesh.weights[v][s] == 0) continue;
-        p += apply(r.matrices.at(rec.bone_offset + mesh.joints[v][s]), mesh.positions[v]) *
+        p += apply(r.matrices.at(rec.bone_offset + mesh.joints[v][s]), vertex) *
              double(mesh.weights[v][s]);
       }
-      worst = std::max(worst, distance(p, expect.positions[v]));
+      worst = std::max(worst, distance(p, mesh::z_up_to_y_up(expect.positions[v])));
     }
   }
   CHECK(worst < 1e-3 * set.rim_radius);

@@ -3,11 +3,13 @@
 // Chromium (/usr/bin/chromium, driven by npm `playwright-core`) with software WebGL, renders each
 // once and prints one JSON line per file:
 //   {"file", "skinnedMeshes", "bones", "skins", "meshes", "instancedMeshes", "instances",
-//    "drawCalls", "triangles", "drawnPixels", "pixels"}
+//    "drawCalls", "triangles", "drawnPixels", "pixels", "minX", "minY", "minZ", "maxX", "maxY",
+//    "maxZ"}
 // skinnedMeshes counts THREE.SkinnedMesh objects, bones the distinct THREE.Bone objects,
 // skins the distinct skeletons, instances the sum of InstancedMesh counts; drawCalls and
 // triangles come from renderer.info after one render; drawnPixels are the pixels of the
-// 256 x 256 picture whose colour differs from the background.
+// 256 x 256 picture whose colour differs from the background; min/max are the world bounds of
+// what is drawn, in three.js's y-up frame (glTF's), so a test can see which way is up.
 // The files are served from a localhost HTTP server; the browser gets a fresh profile. With
 // RAMUS_THREE_SCREENSHOTS=1 the picture of each file is kept as FILE.three.png.
 //   node load_in_three.js FILE.glb...
@@ -110,16 +112,16 @@ window.loadAndRender = async (url) => {
   const renderer = new THREE.WebGLRenderer({ canvas, antialias: false, preserveDrawingBuffer: true });
   renderer.setPixelRatio(1);
   renderer.setSize(size, size, false);
-  // Looking along +y with z up, far enough that the wider of the x and z extents fills 90% of
-  // the picture.
+  // From the front as glTF defines it (looking along -z, y up), far enough that the wider of
+  // the x and y extents fills 90% of the picture.
   const centre = box.getCenter(new THREE.Vector3());
   const extent = box.getSize(new THREE.Vector3());
   const fov = 40;
-  const fit = Math.max(extent.x, extent.z, 1e-6) / 2 / Math.tan((fov / 2) * Math.PI / 180) / 0.9;
-  const distance = fit + extent.y / 2;
-  const camera = new THREE.PerspectiveCamera(fov, 1, distance * 0.01, distance * 4 + extent.y);
-  camera.position.copy(centre).add(new THREE.Vector3(0, -distance, 0));
-  camera.up.set(0, 0, 1);
+  const fit = Math.max(extent.x, extent.y, 1e-6) / 2 / Math.tan((fov / 2) * Math.PI / 180) / 0.9;
+  const distance = fit + extent.z / 2;
+  const camera = new THREE.PerspectiveCamera(fov, 1, distance * 0.01, distance * 4 + extent.z);
+  camera.position.copy(centre).add(new THREE.Vector3(0, 0, distance));
+  camera.up.set(0, 1, 0);
   camera.lookAt(centre);
   renderer.info.autoReset = false;
   renderer.info.reset();
@@ -133,7 +135,9 @@ window.loadAndRender = async (url) => {
   }
   const result = { skinnedMeshes: skinned, bones: bones.size, skins: skins.size, meshes,
     instancedMeshes: instanced, instances, drawCalls: renderer.info.render.calls,
-    triangles: renderer.info.render.triangles, drawnPixels: drawn, pixels: size * size };
+    triangles: renderer.info.render.triangles, drawnPixels: drawn, pixels: size * size,
+    minX: box.min.x, minY: box.min.y, minZ: box.min.z, maxX: box.max.x, maxY: box.max.y,
+    maxZ: box.max.z };
   if (window.screenshotWanted) result.png = canvas.toDataURL('image/png');
   renderer.dispose();
   canvas.remove();
