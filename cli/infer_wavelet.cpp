@@ -79,6 +79,12 @@ int run_wavelet(const WaveletArgs& a, const InferCommonArgs& common, const Globa
     throw UserError(common.input + ": " + e.what());
   }
   write_file_atomically(common.output, r.ramus_text);
+  // The alignment's own warning was printed when the scan was read.
+  for (const std::string& w : r.warnings) {
+    if (w != scan.aligned.alignment.warning && !global.quiet) {
+      std::fprintf(stderr, "ramus infer: warning: %s\n", w.c_str());
+    }
+  }
   print_result(r, common);
   return 0;
 }

@@ -119,7 +119,7 @@ WaveletInference infer_wavelet_grammar(const AlignedCloud& input,
   const AlignedCloud cloud = without_isolated_points(input, stray);
   if (stray > 0) {
     r.warnings.push_back("left out " + std::to_string(stray) +
-                         " isolated point(s) with no other point within 1/64 of the scan's "
+                         " isolated point(s) with no other point within 1/16 of the scan's "
                          "extent");
   }
 

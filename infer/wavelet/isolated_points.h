@@ -4,7 +4,8 @@
 // the tree (pytlidar_tree_1.las has one 15 m out at 12 m height) stretches the cube, coarsens
 // every cell and becomes a significant coefficient of its own that the spanning trees (III-E)
 // must join to the tree with an edge through empty air. A point is isolated when no other point
-// lies in its cell or the 26 around it, cells being 1/64 of the cloud's largest extent.
+// lies in its cell or the 26 around it, cells being 1/16 of the cloud's largest extent: far
+// enough that a sparse scan keeps every twig, near enough to leave out a stray return.
 #pragma once
 
 #include <cstddef>
@@ -13,7 +14,7 @@
 
 namespace ramus::wavelet {
 
-inline constexpr int kIsolationCells = 64;  // cells along the largest extent
+inline constexpr int kIsolationCells = 16;  // cells along the largest extent
 
 // The cloud without its isolated points (same alignment); `removed` counts them.
 AlignedCloud without_isolated_points(const AlignedCloud& cloud, std::size_t& removed);

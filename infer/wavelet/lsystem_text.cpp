@@ -143,9 +143,15 @@ LsystemText lsystem_text(const std::vector<LevelTree>& trees, const LsystemTextO
       for (std::uint32_t v = e; v != fine.entry[coarse.nodes[u].parent]; v = fine.nodes[v].parent) {
         chain.push_back(v);
       }
+      // The chain is the predecessor refined: it keeps the predecessor's width, so widths
+      // never grow along the regrown tree whichever rule a vector picks (III-G), and u's
+      // branches are narrower by their Da Vinci share of the entry's width.
       for (std::size_t k = chain.size(); k-- > 0;) {
-        p.successors.push_back({vector_of(fine, chain[k]), 0, false});
+        Successor s{vector_of(fine, chain[k]), 0, false};
+        s.v.width = p.pred.width;
+        p.successors.push_back(s);
       }
+      const double entry_width = fine.nodes[e].width;
       std::vector<Token> tokens;
       subtree_tokens(fine, e, true, [&](std::uint32_t c) { return fine.nodes[c].owner == u; },
                      tokens);
@@ -153,7 +159,10 @@ LsystemText lsystem_text(const std::vector<LevelTree>& trees, const LsystemTextO
         Successor s;
         s.what = t.what;
         s.lateral = t.lateral;
-        if (t.what == 0) s.v = vector_of(fine, t.node);
+        if (t.what == 0) {
+          s.v = vector_of(fine, t.node);
+          s.v.width = p.pred.width * std::min(1.0, fine.nodes[t.node].width / entry_width);
+        }
         if (t.what == 1) ++p.branches;
         p.successors.push_back(s);
       }
@@ -223,8 +232,24 @@ LsystemText lsystem_text(const std::vector<LevelTree>& trees, const LsystemTextO
                     num(v.width / cell) + " * cell)";
     }
     text += "  // The axiom: the tree of dyad " + std::to_string(t.level) + " (" +
-            std::to_string(r.axiom_vectors) + " vectors) from the scan's base.\n";
-    text += "  axiom " + axiom_text + ";\n";
+            std::to_string(r.axiom_vectors) + " vectors) from the trunk's foot.\n";
+    // The turtle starts at the origin (the lowest point); the tree starts at the base, the
+    // trunk's foot: a move there first (it draws nothing and makes no node).
+    const Vec3 foot = t.nodes[0].position;
+    const double away = std::sqrt(foot.x * foot.x + foot.y * foot.y);
+    std::string move;
+    if (away > 1e-6 * cell) {
+      const std::string a = num(std::atan2(foot.x, foot.y) * kDegree);
+      move = "/(" + a + ") &(90) f(" + num(away) + ") ^(90) \\(" + a + ") ";
+    }
+    // Branches leaving the base in brackets would each start a root of their own (the turtle's
+    // state before the first segment has no node): a zero-length segment makes the root first.
+    if (t.children[0].size() > 1) {
+      double widest = 0;
+      for (std::uint32_t c : t.children[0]) widest = std::max(widest, t.nodes[c].width);
+      move += "!(" + num(widest / cell) + " * cell) F(0) ";
+    }
+    text += "  axiom " + move + axiom_text + ";\n";
   }
   text += "  // Each vector turns from the initial frame (heading up) to its heading: roll a\n";
   text += "  // about the vertical, pitch down e; it draws and turns back.\n";
@@ -251,7 +276,7 @@ LsystemText lsystem_text(const std::vector<LevelTree>& trees, const LsystemTextO
       if (!body.empty() && body.back() != '[') body += ' ';
       const double len = s.v.length / p.pred.length;
       const double wid = p.pred.width > 0 ? s.v.width / p.pred.width : 1.0;
-      std::string elevation = num(s.v.elevation), width = "w * " + num(wid);
+      std::string elevation = num(s.v.elevation), width = wid == 1.0 ? "w" : "w * " + num(wid);
       if (s.lateral && named) {
         elevation = num(s.v.elevation / tilt) + " * branch_tilt";
         width = "w * " + num(wid / ratio) + " * width_ratio";

@@ -229,6 +229,26 @@ LevelTree refine(const LevelTree& coarse, const DyadTree& dyad, const CellCentro
   return t;
 }
 
+// The foot of the trunk: at the lowest height (III-A's root), where the lowest 5 % of the points
+// are on average. The lowest point itself is wherever a drooping branch or a stray return
+// touches the ground, often metres from the trunk; the tree grown from there would begin with a
+// link along the ground.
+Vec3 trunk_foot(const AlignedCloud& cloud) {
+  double lo = 0, hi = 0;
+  for (const Vec3& p : cloud.points) {
+    lo = std::min(lo, p.z);
+    hi = std::max(hi, p.z);
+  }
+  Vec3 sum{0, 0, 0};
+  double n = 0;
+  for (const Vec3& p : cloud.points) {
+    if (p.z > lo + 0.05 * (hi - lo)) continue;
+    sum += Vec3(p.x, p.y, 0);
+    n += 1;
+  }
+  return n > 0 ? Vec3(sum.x / n, sum.y / n, lo) : Vec3(0, 0, lo);
+}
+
 }  // namespace
 
 std::vector<LevelTree> tree_hierarchy(const std::vector<DyadTree>& dyads,
@@ -239,6 +259,7 @@ std::vector<LevelTree> tree_hierarchy(const std::vector<DyadTree>& dyads,
   base.level = -1;
   base.cell = grid.voxel_size * double(grid.n) * 2;
   base.nodes.push_back(HierarchyNode{});
+  base.nodes[0].position = trunk_foot(cloud);
   base.nodes[0].leaves = 1;
   base.cell_of.push_back({-1, -1, -1});
   link_children(base);

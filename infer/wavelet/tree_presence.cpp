@@ -21,6 +21,7 @@ std::string metres(double v) {
 
 void require_tree(const AlignedCloud& cloud) {
   const std::size_t n = cloud.points.size();
+  if (n == 0) throw std::invalid_argument("the scan has no points");
   if (n < kMinTreePoints) {
     throw std::invalid_argument("the scan has " + std::to_string(n) + " point(s); a tree needs at " +
                                 "least " + std::to_string(kMinTreePoints) +
