@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
 #include <optional>
 #include <unordered_map>
 
@@ -229,20 +230,47 @@ LevelTree refine(const LevelTree& coarse, const DyadTree& dyad, const CellCentro
   return t;
 }
 
-// The foot of the trunk: at the lowest height (III-A's root), where the lowest 5 % of the points
-// are on average. The lowest point itself is wherever a drooping branch or a stray return
-// touches the ground, often metres from the trunk; the tree grown from there would begin with a
-// link along the ground.
-Vec3 trunk_foot(const AlignedCloud& cloud) {
+// The foot of the trunk: at the lowest height (III-A's root), under the densest column of the
+// lowest 5 % of the points (ground-projected density, as Livny et al. 2010 find tree bases),
+// columns one cell of the finest dyad wide. The lowest point itself is wherever a drooping
+// branch or a stray return touches the ground, often metres from the trunk, and so is the mean
+// of the low points under a weeping or sweeping crown; the trunk is where they are densest.
+Vec3 trunk_foot(const AlignedCloud& cloud, double cell) {
   double lo = 0, hi = 0;
   for (const Vec3& p : cloud.points) {
     lo = std::min(lo, p.z);
     hi = std::max(hi, p.z);
   }
+  std::map<std::pair<std::int64_t, std::int64_t>, std::uint32_t> columns;
+  auto column = [&](const Vec3& p) {
+    return std::pair<std::int64_t, std::int64_t>(std::int64_t(std::floor(p.x / cell)),
+                                                 std::int64_t(std::floor(p.y / cell)));
+  };
+  for (const Vec3& p : cloud.points) {
+    if (p.z <= lo + 0.05 * (hi - lo)) ++columns[column(p)];
+  }
+  // The densest 3 x 3 block of columns (ties: the first in (x, y) order).
+  std::pair<std::int64_t, std::int64_t> best{0, 0};
+  std::uint32_t most = 0;
+  for (const auto& [c, n] : columns) {
+    std::uint32_t around = 0;
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto it = columns.find({c.first + dx, c.second + dy});
+        if (it != columns.end()) around += it->second;
+      }
+    }
+    if (around > most) {
+      most = around;
+      best = c;
+    }
+  }
   Vec3 sum{0, 0, 0};
   double n = 0;
   for (const Vec3& p : cloud.points) {
     if (p.z > lo + 0.05 * (hi - lo)) continue;
+    const auto c = column(p);
+    if (std::abs(c.first - best.first) > 1 || std::abs(c.second - best.second) > 1) continue;
     sum += Vec3(p.x, p.y, 0);
     n += 1;
   }
@@ -259,7 +287,9 @@ std::vector<LevelTree> tree_hierarchy(const std::vector<DyadTree>& dyads,
   base.level = -1;
   base.cell = grid.voxel_size * double(grid.n) * 2;
   base.nodes.push_back(HierarchyNode{});
-  base.nodes[0].position = trunk_foot(cloud);
+  // Columns as wide as a cell of the finest dyad (two voxels).
+  const double finest = grid.voxel_size * double(std::min<std::size_t>(grid.n, 2));
+  base.nodes[0].position = trunk_foot(cloud, finest);
   base.nodes[0].leaves = 1;
   base.cell_of.push_back({-1, -1, -1});
   link_children(base);

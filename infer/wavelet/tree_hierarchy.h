@@ -9,7 +9,7 @@
 // down so that every finer tree refines the coarser one:
 //
 // - Level "-1" is the base alone: the foot of the trunk, at the height of the scan's lowest
-//   point (III-A's root, the origin) where the lowest 5 % of the points are on average.
+//   point (III-A's root, the origin), under the densest column of the lowest 5 % of the points.
 // - Dyad j's significant cells (III-E's nodes; positions: cell_centroids.h) each belong to one
 //   node of tree j - 1, its *owner*: the node whose cell holds them (the box of Eq. 2-3 for a
 //   single cell, in the scaled or the exact reading), or the nearest node when that cell is not
