@@ -25,16 +25,34 @@ int voxel_of(double coordinate, double size, std::size_t n) {
 }  // namespace
 
 CellCentroids::CellCentroids(const AlignedCloud& cloud, const VoxelGrid& grid) : grid_(grid) {
-  levels_.resize(std::size_t(grid.levels) + 1);
-  auto& voxels = levels_.back();
-  voxels.reserve(cloud.points.size() / 2 + 16);
-  for (const Vec3& p : cloud.points) {
-    const auto c = cell_of(grid.levels, p);
-    Sum& s = voxels[key(c[0], c[1], c[2])];
-    s.sum += p;
-    ++s.count;
+  // The finest dyad (L - 1) from the points: through a dense array when it is small (up to
+  // 64^3 cells, a 128^3 grid), hashing only its occupied cells; hashing every point otherwise.
+  const int top = std::max(0, grid.levels - 1);
+  levels_.resize(std::size_t(top) + 1);
+  auto& finest = levels_.back();
+  const std::int64_t side = std::int64_t(1) << top;
+  if (side * side * side <= (std::int64_t(1) << 18)) {
+    std::vector<Sum> dense(std::size_t(side * side * side));
+    for (const Vec3& p : cloud.points) {
+      const auto c = cell_of(top, p);
+      Sum& s = dense[std::size_t(c[0] + side * (c[1] + side * c[2]))];
+      s.sum += p;
+      ++s.count;
+    }
+    for (std::int64_t i = 0; i < std::int64_t(dense.size()); ++i) {
+      if (dense[std::size_t(i)].count == 0) continue;
+      finest.emplace(key(i % side, i / side % side, i / (side * side)), dense[std::size_t(i)]);
+    }
+  } else {
+    finest.reserve(cloud.points.size() / 4 + 16);
+    for (const Vec3& p : cloud.points) {
+      const auto c = cell_of(top, p);
+      Sum& s = finest[key(c[0], c[1], c[2])];
+      s.sum += p;
+      ++s.count;
+    }
   }
-  for (int j = grid.levels; j-- > 0;) {
+  for (int j = top; j-- > 0;) {
     auto& coarse = levels_[std::size_t(j)];
     coarse.reserve(levels_[std::size_t(j) + 1].size() / 2 + 16);
     for (const auto& [k, s] : levels_[std::size_t(j) + 1]) {
@@ -47,6 +65,7 @@ CellCentroids::CellCentroids(const AlignedCloud& cloud, const VoxelGrid& grid) :
 }
 
 std::optional<Vec3> CellCentroids::centroid(int level, const std::array<int, 3>& cell) const {
+  if (level < 0 || level >= int(levels_.size())) return std::nullopt;
   for (int k = 0; k < 3; ++k) {
     if (cell[k] < 0 || cell[k] >= (1 << level)) return std::nullopt;
   }

@@ -25,12 +25,12 @@ namespace ramus::wavelet {
 
 class CellCentroids {
  public:
-  // One pass over the points into the voxels of `grid` (the grid they were voxelized into),
-  // then each coarser dyad by merging eight cells into one.
+  // One pass over the points into the cells of the finest dyad of `grid` (the grid they were
+  // voxelized into), then each coarser dyad by merging eight cells into one.
   CellCentroids(const AlignedCloud& cloud, const VoxelGrid& grid);
 
   // The centroid of the points in cell `cell` (local index, 0 .. 2^level - 1 per axis) of dyad
-  // `level`, aligned frame; nothing when the cell holds no point.
+  // `level` (0 .. L-1), aligned frame; nothing when the cell holds no point.
   std::optional<Vec3> centroid(int level, const std::array<int, 3>& cell) const;
   // The centre of that cell.
   Vec3 centre(int level, const std::array<int, 3>& cell) const;
@@ -43,7 +43,7 @@ class CellCentroids {
     std::uint32_t count = 0;
   };
   const VoxelGrid& grid_;
-  std::vector<std::unordered_map<std::uint64_t, Sum>> levels_;  // index: dyad, then the voxels
+  std::vector<std::unordered_map<std::uint64_t, Sum>> levels_;  // index: dyad 0 .. L-1
 };
 
 }  // namespace ramus::wavelet

@@ -140,8 +140,8 @@ Fidelity measure_fidelity(const AlignedCloud& cloud, const WaveletInferOptions& 
   vo.levels = levels_for_side(std::uint64_t(options.grid));
   vo.values = options.values;
   // The points the inference quantized: without the isolated ones (isolated_points.h).
-  std::size_t stray = 0;
-  const VoxelGrid grid = voxelize(without_isolated_points(cloud, stray), vo);
+  const std::optional<AlignedCloud> kept = without_isolated_points(cloud);
+  const VoxelGrid grid = voxelize(kept ? *kept : cloud, vo);
   Fidelity f;
   f.grid_side = grid.n;
   f.voxel_size = grid.voxel_size;

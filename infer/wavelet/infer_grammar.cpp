@@ -115,10 +115,10 @@ WaveletInference infer_wavelet_grammar(const AlignedCloud& input,
   WaveletInference r;
   StageClock clock(r.timings);
   r.points = input.points.size();
-  std::size_t stray = 0;
-  const AlignedCloud cloud = without_isolated_points(input, stray);
-  if (stray > 0) {
-    r.warnings.push_back("left out " + std::to_string(stray) +
+  const std::optional<AlignedCloud> kept = without_isolated_points(input);
+  const AlignedCloud& cloud = kept ? *kept : input;
+  if (kept) {
+    r.warnings.push_back("left out " + std::to_string(input.points.size() - kept->points.size()) +
                          " isolated point(s) with no other point within 1/16 of the scan's "
                          "extent");
   }

@@ -8,9 +8,9 @@
 
 namespace ramus::wavelet {
 
-AlignedCloud without_isolated_points(const AlignedCloud& cloud, std::size_t& removed) {
-  removed = 0;
-  if (cloud.points.empty()) return cloud;
+std::optional<AlignedCloud> without_isolated_points(const AlignedCloud& cloud) {
+  std::size_t removed = 0;
+  if (cloud.points.empty()) return std::nullopt;
   Vec3 lo = cloud.points[0], hi = cloud.points[0];
   for (const Vec3& p : cloud.points) {
     for (int k = 0; k < 3; ++k) {
@@ -19,7 +19,7 @@ AlignedCloud without_isolated_points(const AlignedCloud& cloud, std::size_t& rem
     }
   }
   const double extent = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z});
-  if (!(extent > 0)) return cloud;
+  if (!(extent > 0)) return std::nullopt;
   // A dense count grid: one pass, no hashing (the inference of a 64^3 grid takes milliseconds).
   constexpr int n = kIsolationCells;
   const double size = extent * (1 + 1e-9) / n;
@@ -51,7 +51,7 @@ AlignedCloud without_isolated_points(const AlignedCloud& cloud, std::size_t& rem
       ++removed;
     }
   }
-  if (removed == 0) return cloud;
+  if (removed == 0) return std::nullopt;
   AlignedCloud out;
   out.alignment = cloud.alignment;
   out.points.reserve(cloud.points.size() - removed);

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <optional>
 
 #include "infer/wavelet/alignment.h"
 
@@ -16,7 +17,8 @@ namespace ramus::wavelet {
 
 inline constexpr int kIsolationCells = 16;  // cells along the largest extent
 
-// The cloud without its isolated points (same alignment); `removed` counts them.
-AlignedCloud without_isolated_points(const AlignedCloud& cloud, std::size_t& removed);
+// The cloud without its isolated points (same alignment); nothing when there is none (the
+// cloud is used as it is, not copied).
+std::optional<AlignedCloud> without_isolated_points(const AlignedCloud& cloud);
 
 }  // namespace ramus::wavelet

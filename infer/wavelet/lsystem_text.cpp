@@ -11,8 +11,9 @@
 namespace ramus::wavelet {
 namespace {
 
-// 6 significant digits are far below a cell and keep the file small.
-std::string num(double v, int digits = 6) {
+// 5 significant digits: a hundredth of a degree, a ten-thousandth of a length ratio; far
+// below a cell, and the file stays small.
+std::string num(double v, int digits = 5) {
   if (!std::isfinite(v)) throw std::logic_error("non-finite number in an inferred grammar");
   if (v == 0) return "0";  // also turns -0 into 0
   char buf[40];

@@ -138,8 +138,7 @@ TEST_CASE("fidelity: the axiom is the axiom dyad's joined tree and one step regr
   o.grid = 32;
   const WaveletInference r = infer_wavelet_grammar(aligned, o);
   // The trees of tree_hierarchy.h, built as the inference builds them.
-  std::size_t stray = 0;
-  const AlignedCloud kept = without_isolated_points(aligned, stray);
+  const AlignedCloud kept = without_isolated_points(aligned).value_or(aligned);
   VoxelizeOptions vo;
   vo.levels = 5;
   const VoxelGrid grid = voxelize(kept, vo);
@@ -230,10 +229,8 @@ TEST_CASE("fidelity: a real scan and a scanned grammar tree give consistent, rep
     // A perfect regeneration -- the input skeleton itself -- scores 0.
     VoxelizeOptions vo;
     vo.levels = 5;
-    std::size_t stray = 0;
-    const WaveletPyramid pyramid =
-        haar_forward(voxelize(without_isolated_points(aligned, stray), vo),
-                     Decomposition::nonstandard);
+    const WaveletPyramid pyramid = haar_forward(
+        voxelize(without_isolated_points(aligned).value_or(aligned), vo), Decomposition::nonstandard);
     DyadTreeOptions to;
     to.threshold = o.mst_threshold;
     const Skeleton input = to_skeleton(dyad_tree(pyramid, f.compared_dyad, to), pyramid, to);
