@@ -17,9 +17,9 @@ std::array<int, 3> unkey(std::uint64_t k) {
 
 // The voxel a coordinate falls in, clamped like voxelize() so that every point has a voxel.
 int voxel_of(double coordinate, double size, std::size_t n) {
-  const double c = std::floor(coordinate / size);
-  if (!(c > 0)) return 0;
-  return int(std::min<double>(double(n - 1), c));
+  const double c = coordinate / size;
+  if (!(c >= 1)) return 0;
+  return c >= double(n - 1) ? int(n - 1) : int(c);
 }
 
 }  // namespace

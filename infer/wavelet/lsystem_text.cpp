@@ -2,6 +2,7 @@
 #include "infer/wavelet/lsystem_text.h"
 
 #include <algorithm>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -17,8 +18,9 @@ std::string num(double v, int digits = 5) {
   if (!std::isfinite(v)) throw std::logic_error("non-finite number in an inferred grammar");
   if (v == 0) return "0";  // also turns -0 into 0
   char buf[40];
-  std::snprintf(buf, sizeof buf, "%.*g", digits, v);
-  std::string s = buf;
+  // printf's %.*g, without its locale and format parsing (thousands of numbers per grammar).
+  const auto end = std::to_chars(buf, buf + sizeof buf, v, std::chars_format::general, digits).ptr;
+  std::string s(buf, end);
   return s == "-0" ? "0" : s;
 }
 

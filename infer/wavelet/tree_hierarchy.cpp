@@ -92,9 +92,12 @@ void link(LevelTree& t, const CellCentroids& cc, std::uint32_t from, std::uint32
     for (int s = 1; s < steps; ++s) {
       const Vec3 q = a + d * (double(s) / steps);
       const std::array<int, 3> c = cc.cell_of(t.level, q);
-      std::optional<Vec3> best;
-      std::array<int, 3> best_cell{};
-      for (int dz = -1; dz <= 1; ++dz) {
+      // The cell the sample falls in, else the occupied neighbour nearest to the sample.
+      std::array<int, 3> best_cell = c;
+      std::optional<Vec3> best = cc.centroid(t.level, c);
+      if (best && dist2(*best - q) > t.cell * t.cell) best.reset();
+      const bool own = best.has_value();
+      for (int dz = -1; dz <= 1 && !own; ++dz) {
         for (int dy = -1; dy <= 1; ++dy) {
           for (int dx = -1; dx <= 1; ++dx) {
             const std::array<int, 3> n{c[0] + dx, c[1] + dy, c[2] + dz};
