@@ -157,8 +157,8 @@ WaveletInference infer_wavelet_grammar(const AlignedCloud& input,
   }
   clock.done("spanning trees");
 
-  // III-G: the axiom is one dyad's tree; by default the second finest, so that one derivation
-  // step regenerates a tree at the finest dyad's detail from the rules.
+  // III-G: the axiom is one dyad's (joined) tree; by default the second finest, so that one
+  // derivation step regenerates a tree at the finest dyad's detail from the rules.
   int axiom = options.axiom_level.value_or(levels - 2);
   if (!options.axiom_level) {
     // Fall back to a finer dyad when the default one has no vector (tiny scans).

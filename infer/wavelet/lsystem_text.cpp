@@ -47,7 +47,7 @@ Vector vector_of(const LevelTree& t, std::uint32_t u) {
 // A token of a bracketed successor string: a vector, or a bracket.
 struct Token {
   std::uint32_t node = 0;
-  int what = 0;  // 0: vector, 1: "[", 2: "]"
+  int what = 0;          // 0: vector, 1: "[", 2: "]"
   bool lateral = false;  // the first vector of a bracket
 };
 
@@ -156,8 +156,8 @@ LsystemText lsystem_text(const std::vector<LevelTree>& trees, const LsystemTextO
       }
       const double entry_width = fine.nodes[e].width;
       std::vector<Token> tokens;
-      subtree_tokens(fine, e, true, [&](std::uint32_t c) { return fine.nodes[c].owner == u; },
-                     tokens);
+      subtree_tokens(
+          fine, e, true, [&](std::uint32_t c) { return fine.nodes[c].owner == u; }, tokens);
       for (const Token& t : tokens) {
         Successor s;
         s.what = t.what;
@@ -193,14 +193,18 @@ LsystemText lsystem_text(const std::vector<LevelTree>& trees, const LsystemTextO
       "// Measured quantities; `ramus derive -D name=value` overrides them.\n"
       "// Edge of one cell of the finest dyad (m): the axiom's lengths and widths are\n"
       "// multiples of it, so it scales the whole tree.\n"
-      "param cell = " + num(cell) + ";\n";
+      "param cell = " +
+      num(cell) + ";\n";
   if (named) {
     r.params +=
         "// Mean angle of a lateral branch from the vertical (degrees): every lateral's\n"
         "// angle is a multiple of it.\n"
-        "param branch_tilt = " + num(tilt) + ";\n"
+        "param branch_tilt = " +
+        num(tilt) +
+        ";\n"
         "// Mean width of a lateral branch / width of the vector it refines.\n"
-        "param width_ratio = " + num(ratio) + ";\n";
+        "param width_ratio = " +
+        num(ratio) + ";\n";
   }
 
   std::string text;
@@ -215,7 +219,8 @@ LsystemText lsystem_text(const std::vector<LevelTree>& trees, const LsystemTextO
   {
     const LevelTree& t = trees[std::size_t(axiom)];
     std::vector<Token> tokens;
-    subtree_tokens(t, 0, true, [](std::uint32_t) { return true; }, tokens);
+    subtree_tokens(
+        t, 0, true, [](std::uint32_t) { return true; }, tokens);
     const double s_cells = t.cell / cell;
     std::string axiom_text;
     for (const Token& k : tokens) {
@@ -230,9 +235,8 @@ LsystemText lsystem_text(const std::vector<LevelTree>& trees, const LsystemTextO
       const Vector v = vector_of(t, k.node);
       ++r.axiom_vectors;
       if (!axiom_text.empty() && axiom_text.back() != '[') axiom_text += ' ';
-      axiom_text += "V(" + num(v.azimuth) + ", " + num(v.elevation) + ", " +
-                    num(v.length / cell) + " * cell, " + num(s_cells) + " * cell, " +
-                    num(v.width / cell) + " * cell)";
+      axiom_text += "V(" + num(v.azimuth) + ", " + num(v.elevation) + ", " + num(v.length / cell) +
+                    " * cell, " + num(s_cells) + " * cell, " + num(v.width / cell) + " * cell)";
     }
     text += "  // The axiom: the tree of dyad " + std::to_string(t.level) + " (" +
             std::to_string(r.axiom_vectors) + " vectors) from the trunk's foot.\n";

@@ -33,8 +33,8 @@ struct LsystemTextOptions {
 };
 
 struct LsystemText {
-  std::string params;   // the `param` lines, with their comments
-  std::string lsystem;  // the block
+  std::string params;           // the `param` lines, with their comments
+  std::string lsystem;          // the block
   std::size_t rules = 0;        // vectors with successors (L-rules)
   std::size_t productions = 0;  // written (distinct keys)
   std::size_t axiom_vectors = 0;

@@ -219,8 +219,7 @@ LevelTree refine(const LevelTree& coarse, const DyadTree& dyad, const CellCentro
     const Vec3 from = t.nodes[t.entry[coarse.nodes[u].parent]].position;
     std::uint32_t best = members[u][0];
     for (std::uint32_t m : members[u]) {
-      if (dist2(t.nodes[m].position - from) <
-          dist2(t.nodes[best].position - from)) {
+      if (dist2(t.nodes[m].position - from) < dist2(t.nodes[best].position - from)) {
         best = m;
       }
     }
@@ -282,9 +281,8 @@ Vec3 trunk_foot(const AlignedCloud& cloud, double cell) {
 
 }  // namespace
 
-std::vector<LevelTree> tree_hierarchy(const std::vector<DyadTree>& dyads,
-                                      const AlignedCloud& cloud, const VoxelGrid& grid,
-                                      const HierarchyOptions& options) {
+std::vector<LevelTree> tree_hierarchy(const std::vector<DyadTree>& dyads, const AlignedCloud& cloud,
+                                      const VoxelGrid& grid, const HierarchyOptions& options) {
   // Level "-1": the base alone, at the scan's lowest point (the aligned frame's origin).
   LevelTree base;
   base.level = -1;

@@ -41,17 +41,17 @@
 namespace ramus::wavelet {
 
 struct HierarchyNode {
-  Vec3 position;                      // aligned frame, metres
-  std::uint32_t parent = kNoParent;   // in the same level's tree; kNoParent for the base
-  std::uint32_t owner = kNoParent;    // the node of the next coarser tree it refines
-  std::uint32_t leaves = 0;           // leaves in its subtree (Da Vinci weight, III-E)
-  double width = 0;                   // of the segment from its parent, metres
-  bool inherited = false;             // kept from the coarser tree (no significant cell here)
+  Vec3 position;                     // aligned frame, metres
+  std::uint32_t parent = kNoParent;  // in the same level's tree; kNoParent for the base
+  std::uint32_t owner = kNoParent;   // the node of the next coarser tree it refines
+  std::uint32_t leaves = 0;          // leaves in its subtree (Da Vinci weight, III-E)
+  double width = 0;                  // of the segment from its parent, metres
+  bool inherited = false;            // kept from the coarser tree (no significant cell here)
 };
 
 struct LevelTree {
-  int level = 0;      // the dyad
-  double cell = 0;    // edge of one cell of the dyad, metres
+  int level = 0;                     // the dyad
+  double cell = 0;                   // edge of one cell of the dyad, metres
   std::vector<HierarchyNode> nodes;  // node 0 is the base
   // entry[u] for each node u of the coarser tree: the node of this tree where u's cells start
   // (their spanning tree's root). The chain from entry[parent of u] to it is u's link.
@@ -67,8 +67,7 @@ struct HierarchyOptions {
 };
 
 // Trees for dyads 0 .. L-1 (index = dyad), built coarse to fine from the dyad trees of III-E.
-std::vector<LevelTree> tree_hierarchy(const std::vector<DyadTree>& dyads,
-                                      const AlignedCloud& cloud, const VoxelGrid& grid,
-                                      const HierarchyOptions& options = {});
+std::vector<LevelTree> tree_hierarchy(const std::vector<DyadTree>& dyads, const AlignedCloud& cloud,
+                                      const VoxelGrid& grid, const HierarchyOptions& options = {});
 
 }  // namespace ramus::wavelet

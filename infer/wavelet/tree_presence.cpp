@@ -23,9 +23,9 @@ void require_tree(const AlignedCloud& cloud) {
   const std::size_t n = cloud.points.size();
   if (n == 0) throw std::invalid_argument("the scan has no points");
   if (n < kMinTreePoints) {
-    throw std::invalid_argument("the scan has " + std::to_string(n) + " point(s); a tree needs at " +
-                                "least " + std::to_string(kMinTreePoints) +
-                                " to show a trunk and branches");
+    throw std::invalid_argument("the scan has " + std::to_string(n) +
+                                " point(s); a tree needs at " + "least " +
+                                std::to_string(kMinTreePoints) + " to show a trunk and branches");
   }
   // One pass: bounds, and the moments of the covariance about the first point (shifted data
   // keep the sums well conditioned far from the origin).
@@ -49,9 +49,9 @@ void require_tree(const AlignedCloud& cloud) {
   const double height = hi.z - lo.z;
   const double across = std::max(hi.x - lo.x, hi.y - lo.y);
   if (!(height > kMinHeightShare * across) || !(height > 0)) {
-    throw std::invalid_argument(
-        "no height: all points lie within " + metres(height) + " of one height over " +
-        metres(across) + " across, so nothing rises above the base (no trunk, no crown)");
+    throw std::invalid_argument("no height: all points lie within " + metres(height) +
+                                " of one height over " + metres(across) +
+                                " across, so nothing rises above the base (no trunk, no crown)");
   }
   const double m = double(n);
   Eigen::Matrix3d cov;
@@ -64,8 +64,8 @@ void require_tree(const AlignedCloud& cloud) {
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
   const Eigen::Vector3d sd = eig.eigenvalues().cwiseMax(0.0).cwiseSqrt();  // ascending
   if (!(sd[0] > kMinThickness * sd[2])) {
-    throw std::invalid_argument("the points lie on one plane (" + metres(sd[0]) +
-                                " thick over " + metres(sd[2]) +
+    throw std::invalid_argument("the points lie on one plane (" + metres(sd[0]) + " thick over " +
+                                metres(sd[2]) +
                                 "): no tree, whose trunk and branches need three dimensions");
   }
 }

@@ -32,13 +32,13 @@ inline Skeleton grow_text(const std::string& text,
 }
 
 struct TreeShape {
-  std::size_t roots = 0;            // nodes without a parent: one tree has one
-  double length = 0;                // total segment length
-  double axis_locked = 0;           // share of the length within 3 degrees of x, y or z
-  double longest = 0;               // longest internode
-  double lowest = 0;                // smallest z of a node (the base is at 0)
-  double widest_child = 0;          // largest radius(child) / radius(parent)
-  double height = 0;                // largest z
+  std::size_t roots = 0;    // nodes without a parent: one tree has one
+  double length = 0;        // total segment length
+  double axis_locked = 0;   // share of the length within 3 degrees of x, y or z
+  double longest = 0;       // longest internode
+  double lowest = 0;        // smallest z of a node (the base is at 0)
+  double widest_child = 0;  // largest radius(child) / radius(parent)
+  double height = 0;        // largest z
 };
 
 inline TreeShape shape_of(const Skeleton& s) {

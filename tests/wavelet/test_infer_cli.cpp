@@ -49,7 +49,8 @@ TEST_CASE("infer on every readable real scan writes a grammar that checks and bu
     CHECK(text.find("voxels ") != std::string::npos);
     CHECK(text.find("lsystem ") != std::string::npos);
     CHECK(text.find("  axiom ") != std::string::npos);
-    CHECK(text.find("select nearest(sin(e) * sin(a), sin(e) * cos(a), cos(e), l / s);") != std::string::npos);
+    CHECK(text.find("select nearest(sin(e) * sin(a), sin(e) * cos(a), cos(e), l / s);") !=
+          std::string::npos);
     const CliResult check = run_ramus({"check", out.string()});
     INFO(check.out);
     CHECK(check.status == 0);

@@ -70,7 +70,8 @@ TEST_CASE("infer on a synthetic fractal tree writes a grammar that checks and re
     CHECK(r.vectors_per_dyad.size() == std::size_t(std::log2(grid)));
     CHECK(r.timings.size() == 7);
     CHECK(r.compression.lossless_ratio > 0.5);
-    CHECK(r.ramus_text.find("select nearest(sin(e) * sin(a), sin(e) * cos(a), cos(e), l / s);") != std::string::npos);
+    CHECK(r.ramus_text.find("select nearest(sin(e) * sin(a), sin(e) * cos(a), cos(e), l / s);") !=
+          std::string::npos);
     CHECK(formatted(r.ramus_text) == r.ramus_text);
 
     const Grown g = grow(r.ramus_text);

@@ -6,8 +6,8 @@
 #include <cctype>
 #include <sstream>
 
-#include "infer/wavelet/infer_grammar.h"
 #include "fractal_cloud.h"
+#include "infer/wavelet/infer_grammar.h"
 #include "regrown_tree_util.h"
 
 using namespace ramus;
@@ -29,8 +29,8 @@ int call_depth(const std::string& line) {
   for (std::size_t i = 0; i < line.size(); ++i) {
     if (line[i] == '/' && i + 1 < line.size() && line[i + 1] == '/') break;  // a comment
     if (line[i] == '(') {
-      const bool named = i > 0 && (std::isalnum(static_cast<unsigned char>(line[i - 1])) ||
-                                   line[i - 1] == '_');
+      const bool named =
+          i > 0 && (std::isalnum(static_cast<unsigned char>(line[i - 1])) || line[i - 1] == '_');
       call.push_back(named);
       if (named) most = std::max(most, ++depth);
     } else if (line[i] == ')' && !call.empty()) {

@@ -8,9 +8,9 @@
 #include <filesystem>
 
 #include "formats/point_cloud_io.h"
+#include "fractal_cloud.h"
 #include "infer/wavelet/infer_grammar.h"
 #include "regrown_tree_util.h"
-#include "fractal_cloud.h"
 
 using namespace ramus;
 using namespace ramus::wavelet;

@@ -151,17 +151,17 @@ TEST_CASE("fidelity: the axiom is the axiom dyad's joined tree and one step regr
   // L-2 itself: the Chamfer measure of a perfect copy is 0 (6-digit numbers in the text).
   const Skeleton axiom = grow_text(r.ramus_text, 0);
   REQUIRE(!axiom.empty());
-  const ChamferDistance c = chamfer_distance(
-      sample_skeleton(level_skeleton(trees[std::size_t(r.axiom_level)]), step),
-      sample_skeleton(axiom, step));
+  const ChamferDistance c =
+      chamfer_distance(sample_skeleton(level_skeleton(trees[std::size_t(r.axiom_level)]), step),
+                       sample_skeleton(axiom, step));
   CHECK(c.mean / grid.voxel_size < 0.01);
   CHECK(c.hausdorff / grid.voxel_size < 0.05);
   // One step: every vector of the axiom takes its own production unless its key equals an
   // earlier one's, so the regrown tree is tree L-1 up to those few.
   const Skeleton grown = grow_text(r.ramus_text, 1);
-  const ChamferDistance d = chamfer_distance(
-      sample_skeleton(level_skeleton(trees[std::size_t(r.axiom_level) + 1]), step),
-      sample_skeleton(grown, step));
+  const ChamferDistance d =
+      chamfer_distance(sample_skeleton(level_skeleton(trees[std::size_t(r.axiom_level) + 1]), step),
+                       sample_skeleton(grown, step));
   INFO("rules " << r.l_rules << ", productions " << r.productions << ", Chamfer " << d.mean);
   if (r.productions == r.l_rules) {
     CHECK(d.mean / grid.voxel_size < 0.01);
@@ -229,8 +229,9 @@ TEST_CASE("fidelity: a real scan and a scanned grammar tree give consistent, rep
     // A perfect regeneration -- the input skeleton itself -- scores 0.
     VoxelizeOptions vo;
     vo.levels = 5;
-    const WaveletPyramid pyramid = haar_forward(
-        voxelize(without_isolated_points(aligned).value_or(aligned), vo), Decomposition::nonstandard);
+    const WaveletPyramid pyramid =
+        haar_forward(voxelize(without_isolated_points(aligned).value_or(aligned), vo),
+                     Decomposition::nonstandard);
     DyadTreeOptions to;
     to.threshold = o.mst_threshold;
     const Skeleton input = to_skeleton(dyad_tree(pyramid, f.compared_dyad, to), pyramid, to);
