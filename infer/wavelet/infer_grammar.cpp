@@ -211,15 +211,22 @@ WaveletInference infer_wavelet_grammar(const AlignedCloud& input,
       "// One spanning-tree vector: turtle turns a (about the vertical) and e (down from it),\n"
       "// length l and width w in metres, s the cell edge of its dyad.\n";
   text += "module V(a, e, l, s, w);\n\n";
-  text += voxels_block(options, vg, r.voxel_rules) + "\n";
+  // The voxels block is written in the formatter's layout already and is spliced in after the
+  // layout pass: its rules, hundreds of lines, need not be parsed once more.
+  const std::string voxels = voxels_block(options, vg, r.voxel_rules) + "\n";
+  const std::string lsystem_mark = "// L-system (III-F, III-G)";
   text +=
-      "// L-system (III-F, III-G): each production replaces a vector of dyad j by the\n"
+      lsystem_mark +
+      ": each production replaces a vector of dyad j by the\n"
       "// vectors of dyad j+1 that refine it (tree_hierarchy.h; offset " +
       std::string(to_string(options.offset)) +
       "), drawn from its start\n"
       "// and ending where it ends, so the regrown tree is one piece rooted at the base.\n";
   text += ls.lsystem;
   r.ramus_text = canonical_layout(text);
+  const std::size_t at = r.ramus_text.find("\n" + lsystem_mark);
+  if (at == std::string::npos) throw std::logic_error("the inferred grammar lost its L-system");
+  r.ramus_text.insert(at + 1, voxels);
   clock.done("emit");
   r.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();
   if (!cloud.alignment.warning.empty()) r.warnings.push_back(cloud.alignment.warning);
