@@ -215,17 +215,21 @@ WaveletInference infer_wavelet_grammar(const AlignedCloud& input,
   // layout pass: its rules, hundreds of lines, need not be parsed once more.
   const std::string voxels = voxels_block(options, vg, r.voxel_rules) + "\n";
   const std::string lsystem_mark = "// L-system (III-F, III-G)";
-  text +=
-      lsystem_mark +
-      ": each production replaces a vector of dyad j by the\n"
-      "// vectors of dyad j+1 that refine it (tree_hierarchy.h; offset " +
-      std::string(to_string(options.offset)) +
-      "), drawn from its start\n"
-      "// and ending where it ends, so the regrown tree is one piece rooted at the base.\n";
+  text += lsystem_mark +
+          ": each production replaces a vector of dyad j by the\n"
+          "// vectors of dyad j+1 that refine it (tree_hierarchy.h; offset " +
+          std::string(to_string(options.offset)) +
+          "), drawn from its start\n"
+          "// and ending where it ends, so the regrown tree is one piece rooted at the base.\n";
   text += ls.lsystem;
   r.ramus_text = canonical_layout(text);
   const std::size_t at = r.ramus_text.find("\n" + lsystem_mark);
-  if (at == std::string::npos) throw std::logic_error("the inferred grammar lost its L-system");
+  if (at == std::string::npos || r.ramus_text.size() < 2 ||
+      r.ramus_text.compare(r.ramus_text.size() - 2, 2, "}\n") != 0) {
+    throw std::logic_error("the inferred grammar lost its L-system");
+  }
+  // The productions before the block's closing brace, then the voxels block before the block.
+  r.ramus_text.insert(r.ramus_text.size() - 2, ls.productions_text);
   r.ramus_text.insert(at + 1, voxels);
   clock.done("emit");
   r.total_seconds = std::chrono::duration<double>(Clock::now() - t0).count();

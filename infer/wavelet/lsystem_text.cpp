@@ -9,6 +9,8 @@
 #include <stdexcept>
 #include <unordered_set>
 
+#include "infer/wavelet/production_layout.h"
+
 namespace ramus::wavelet {
 namespace {
 
@@ -265,22 +267,17 @@ LsystemText lsystem_text(const std::vector<LevelTree>& trees, const LsystemTextO
   for (const Production& p : productions) {
     std::size_t count = 0;
     for (const Successor& s : p.successors) count += s.what == 0;
-    text += "  // Grows a " + num(p.pred.length, 3) + " m vector of dyad " +
-            std::to_string(p.level) + " ending " + num(p.pred_end.z, 3) + " m up, " +
-            num(p.pred.elevation, 3) + " deg from the vertical, into " + std::to_string(count) +
-            " vectors of dyad " + std::to_string(p.level + 1) + " (" + std::to_string(p.branches) +
-            " branches).\n";
-    std::string body;
+    const std::string comment =
+        "  // Grows a " + num(p.pred.length, 3) + " m vector of dyad " + std::to_string(p.level) +
+        " ending " + num(p.pred_end.z, 3) + " m up, " + num(p.pred.elevation, 3) +
+        " deg from the vertical, into " + std::to_string(count) + " vectors of dyad " +
+        std::to_string(p.level + 1) + " (" + std::to_string(p.branches) + " branches).\n";
+    std::vector<std::string> modules;
     for (const Successor& s : p.successors) {
-      if (s.what == 1) {
-        body += " [";
+      if (s.what != 0) {
+        modules.push_back(s.what == 1 ? "[" : "]");
         continue;
       }
-      if (s.what == 2) {
-        body += "]";
-        continue;
-      }
-      if (!body.empty() && body.back() != '[') body += ' ';
       const double len = s.v.length / p.pred.length;
       const double wid = p.pred.width > 0 ? s.v.width / p.pred.width : 1.0;
       std::string elevation = num(s.v.elevation), width = wid == 1.0 ? "w" : "w * " + num(wid);
@@ -288,10 +285,11 @@ LsystemText lsystem_text(const std::vector<LevelTree>& trees, const LsystemTextO
         elevation = num(s.v.elevation / tilt) + " * branch_tilt";
         width = "w * " + num(wid / ratio) + " * width_ratio";
       }
-      body += "V(" + num(s.v.azimuth) + ", " + elevation + ", l * " + num(len) + ", s * 0.5, " +
-              width + ")";
+      modules.push_back("V(" + num(s.v.azimuth) + ", " + elevation + ", l * " + num(len) +
+                        ", s * 0.5, " + width + ")");
     }
-    text += "  V(a, e, l, s, w) " + key_text(p) + " -> " + body + ";\n";
+    r.productions_text += comment;
+    r.productions_text += production_layout("  V(a, e, l, s, w) " + key_text(p) + " ->", modules);
     ++r.productions;
   }
   text += "}\n";
