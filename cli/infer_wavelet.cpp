@@ -1,9 +1,9 @@
 // ramus infer SCAN -o OUT.ramus --method wavelet [--grid 64] [--axiom-level j]
 //     [--offset exact|scaled] [--scanner x,y,z]
 // Friedman & Stamos 2013: one grammar with the voxel grammar (a `voxels` block), the L-rules of
-// the wavelet progression with rule-space selection (an `lsystem` block) and one dyad's tree as
-// the axiom (infer/wavelet/infer_grammar.h). Prints the compression figures, the rule
-// counts and the time of each stage.
+// the wavelet progression with rule-space selection (an `lsystem` block) and one dyad's joined tree
+// as the axiom (infer/wavelet/infer_grammar.h). Prints the compression figures, the rule counts and
+// the time of each stage.
 #include <cstdio>
 #include <memory>
 #include <optional>
@@ -79,6 +79,12 @@ int run_wavelet(const WaveletArgs& a, const InferCommonArgs& common, const Globa
     throw UserError(common.input + ": " + e.what());
   }
   write_file_atomically(common.output, r.ramus_text);
+  // The alignment's own warning was printed when the scan was read.
+  for (const std::string& w : r.warnings) {
+    if (w != scan.aligned.alignment.warning && !global.quiet) {
+      std::fprintf(stderr, "ramus infer: warning: %s\n", w.c_str());
+    }
+  }
   print_result(r, common);
   return 0;
 }

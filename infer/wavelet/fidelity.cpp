@@ -17,6 +17,7 @@
 #include "infer/reconstruct/kdtree.h"
 #include "infer/wavelet/dyad_tree.h"
 #include "infer/wavelet/haar.h"
+#include "infer/wavelet/isolated_points.h"
 #include "infer/wavelet/voxelize.h"
 
 namespace ramus::wavelet {
@@ -138,7 +139,9 @@ Fidelity measure_fidelity(const AlignedCloud& cloud, const WaveletInferOptions& 
   VoxelizeOptions vo;
   vo.levels = levels_for_side(std::uint64_t(options.grid));
   vo.values = options.values;
-  const VoxelGrid grid = voxelize(cloud, vo);
+  // The points the inference quantized: without the isolated ones (isolated_points.h).
+  const std::optional<AlignedCloud> kept = without_isolated_points(cloud);
+  const VoxelGrid grid = voxelize(kept ? *kept : cloud, vo);
   Fidelity f;
   f.grid_side = grid.n;
   f.voxel_size = grid.voxel_size;

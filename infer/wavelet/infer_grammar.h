@@ -1,8 +1,10 @@
 // Inferring one .ramus grammar from a scan with the wavelet method of Friedman & Stamos 2013
 // (III-A to III-G): alignment and voxelization, the 3D Haar transform, the voxel grammar of the
-// finest dyads (a `voxels` block), the spanning trees of the dyads, the L-rules that map each
-// vector of dyad j to the vectors of dyad j + 1 in its box (Eq. 1-3, l_rules.h), and the rule
-// space of III-G (`select nearest` over heading and length). The axiom is the tree of one dyad.
+// finest dyads (a `voxels` block), the spanning trees of the dyads joined into one tree per dyad
+// that refines the coarser one from the trunk's foot (tree_hierarchy.h, beyond the paper: the
+// literal reading regrows a tree in pieces), the L-rules that map each vector of tree j to the
+// vectors of tree j + 1 refining it (III-F), and the rule space of III-G (`select nearest` over
+// heading and length; lsystem_text.h). The axiom is the tree of one dyad.
 //
 // The result is the text of an ordinary .ramus file that `ramus check` and `ramus build` accept.
 #pragma once

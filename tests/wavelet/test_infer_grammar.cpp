@@ -70,36 +70,36 @@ TEST_CASE("infer on a synthetic fractal tree writes a grammar that checks and re
     CHECK(r.vectors_per_dyad.size() == std::size_t(std::log2(grid)));
     CHECK(r.timings.size() == 7);
     CHECK(r.compression.lossless_ratio > 0.5);
-    CHECK(r.ramus_text.find("select nearest(x, y, z, l / s);") != std::string::npos);
+    CHECK(r.ramus_text.find("select nearest(sin(e) * sin(a), sin(e) * cos(a), cos(e), l / s);") !=
+          std::string::npos);
     CHECK(formatted(r.ramus_text) == r.ramus_text);
 
     const Grown g = grow(r.ramus_text);
     CHECK(g.grammar.selection == ir::Selection::Nearest);
-    // The turtle starts at the scan's lowest point (the origin) and draws the Trunk up to the
-    // axiom dyad's root, where the dyad's vectors start: one node per vector, plus the trunk's
-    // two ends; the branches that leave the root after a `]` hang from the trunk's end.
+    // The axiom's tree is rooted at the trunk's foot (tree_hierarchy.h), at the height of the
+    // scan's lowest point (the origin): one node per vector plus the root, and no other root.
     std::size_t roots = 0;
     for (const SkeletonNode& n : g.axiom.nodes) {
       if (n.parent != kNoParent) continue;
       ++roots;
-      CHECK(length(n.position) < 1e-9);
+      CHECK(std::abs(n.position.z) < 1e-6);
+      CHECK(length(n.position) < 0.05);  // the fractal's trunk stands on the origin
     }
     CHECK(roots == 1);
-    CHECK(r.ramus_text.find("axiom Trunk(") != std::string::npos);
-    CHECK(g.axiom.size() == r.axiom_vectors + 2);
+    CHECK(g.axiom.size() == r.axiom_vectors + 1);
     CHECK(g.axiom.validate().empty());
     CHECK(g.derived.validate().empty());
     CHECK(g.derived.size() > g.axiom.size());  // the L-rules refine every vector
-    // The cloud is about 2.4 m tall. A dyad holds the diagonal details, which vanish along a
-    // straight vertical trunk, so its tree starts at the first fork: the axiom (dyad L-2) and the
-    // regrown tree (one step, about dyad L-1) span a good part of the height, never more.
+    // The cloud is about 2.4 m tall. Both the axiom (tree L-2) and the regrown tree (tree L-1)
+    // start at the base and keep the coarser dyads' nodes where the finer dyad has no
+    // significant cell (the straight trunk), so they span the height, never more.
     double top = 0;
     for (const Vec3& p : cloud.points) top = std::max(top, p.z);
     INFO("cloud height " << top << ", axiom " << height(g.axiom) << ", derived "
                          << height(g.derived));
-    CHECK(height(g.axiom) > 0.4 * top);
+    CHECK(height(g.axiom) > 0.8 * top);
     CHECK(height(g.axiom) < 1.2 * top);
-    CHECK(height(g.derived) > 0.4 * top);
+    CHECK(height(g.derived) > 0.8 * top);
     CHECK(height(g.derived) < 1.2 * top);
   }
 }
@@ -116,8 +116,6 @@ TEST_CASE("infer is deterministic and both offsets give valid grammars", "[infer
   CHECK(e.ramus_text.find("offset exact") != std::string::npos);
   CHECK(e.ramus_text != a.ramus_text);
   grow(e.ramus_text);
-  // The exact offset reaches only the low corner octant of each finer dyad: fewer rules.
-  CHECK(e.l_rules < a.l_rules);
   o.axiom_level = 2;
   const WaveletInference low = infer_wavelet_grammar(cloud, o);
   CHECK(low.axiom_level == 2);
@@ -160,18 +158,21 @@ TEST_CASE("infer rejects bad options and degenerate scans with clear errors", "[
   CHECK(message(cloud, o).find("--axiom-level") != std::string::npos);
   CHECK_THROWS_AS(validate_options(o), std::invalid_argument);
 
-  // An empty cloud, a single point, and many points in one voxel: no tree to infer from.
+  // An empty cloud, a single point, and many points at one place: no tree to infer from
+  // (tree_presence.h names what is missing).
   CHECK(message(AlignedCloud{}, {}).find("no points") != std::string::npos);
   AlignedCloud one;
   one.points.push_back(Vec3(0, 0, 0));
-  CHECK(message(one, {}).find("no dyad has two significant coefficients") != std::string::npos);
+  CHECK(message(one, {}).find("the scan has 1 point(s)") != std::string::npos);
   AlignedCloud same;
   for (int i = 0; i < 1000; ++i) same.points.push_back(Vec3(1, 2, 3));
-  CHECK(message(same, {}).find("no dyad has two significant coefficients") != std::string::npos);
+  CHECK(message(same, {}).find("no height") != std::string::npos);
 
   // Fewer points than voxels (40 points on a 64^3 grid) still make a grammar.
   AlignedCloud sparse;
-  for (int i = 0; i < 40; ++i) sparse.points.push_back(Vec3(0.1 * (i % 5), 0, 0.25 * i));
+  for (int i = 0; i < 40; ++i) {
+    sparse.points.push_back(Vec3(0.1 * (i % 5), 0.07 * (i % 3), 0.25 * i));
+  }
   const WaveletInference r = infer_wavelet_grammar(sparse, {});
   CHECK(r.occupied_voxels <= 40);
   grow(r.ramus_text);

@@ -64,13 +64,22 @@ TEST_CASE("enhance levels cli: bad arguments and unusable scans are errors",
   const fs::path dir = fs::path(RAMUS_BINARY_DIR) / "wavelet_apps_enhance_bad";
   fs::create_directories(dir);
   const fs::path one = cli_test::write_text(dir / "one.xyz", "1 2 3\n");
-  const fs::path two = cli_test::write_text(dir / "two.xyz", "1 2 3\n4 5 6\n");
+  // A small tree: a trunk and two branches leaving it in different directions.
+  std::string small;
+  for (int k = 0; k <= 10; ++k) small += "0 0 " + std::to_string(0.1 * k) + "\n";
+  for (int k = 1; k <= 10; ++k) {
+    small += std::to_string(0.05 * k) + " " + std::to_string(0.03 * k) + " " +
+             std::to_string(1 + 0.05 * k) + "\n";
+    small += std::to_string(-0.05 * k) + " " + std::to_string(-0.04 * k) + " " +
+             std::to_string(1 + 0.06 * k) + "\n";
+  }
+  const fs::path two = cli_test::write_text(dir / "two.xyz", small);
   const std::string out = " -o " + (dir / "x.glb").string();
-  // One point is one voxel: no dyad has a spanning tree to infer rules from.
+  // One point holds no tree (tree_presence.h).
   const cli_test::CliResult tiny = run("enhance " + one.string() + " --levels 1 --grid 8" + out);
   CHECK(tiny.status == 1);
-  CHECK(tiny.out.find("no spanning tree") != std::string::npos);
-  // Two points are one vector: a valid, if tiny, tree.
+  CHECK(tiny.out.find("the scan has 1 point(s)") != std::string::npos);
+  // 31 points of a trunk and two branches: a valid, if tiny, tree.
   CHECK(run("-q enhance " + two.string() + " --levels 1 --grid 8" + out).status == 0);
   CHECK(run("enhance " + two.string() + " --levels 1 -o " + (dir / "x.stl").string()).status == 1);
   CHECK(run("enhance " + two.string() + " --levels 1 --grid 48" + out).status == 1);

@@ -1,0 +1,87 @@
+// The tree an inferred wavelet grammar regrows (its `derive 1` from the axiom dyad) is one tree:
+// one root at the base and every segment joined to it through parent links (no pen-up gap),
+// nothing below the base, radii that never grow outwards, no internode longer than a third of
+// the scan's height, and at most 10 % of its length along a grid axis (segments between cell
+// centroids, not lattice offsets). Properties over many seeds of the synthetic tree and over
+// every readable real scan.
+#include <catch2/catch.hpp>
+#include <filesystem>
+
+#include "formats/point_cloud_io.h"
+#include "fractal_cloud.h"
+#include "infer/wavelet/infer_grammar.h"
+#include "regrown_tree_util.h"
+
+using namespace ramus;
+using namespace ramus::wavelet;
+using namespace ramus::wavelet::test;
+
+namespace {
+
+double cloud_height(const AlignedCloud& c) {
+  double lo = c.points[0].z, hi = lo;
+  for (const Vec3& p : c.points) {
+    lo = std::min(lo, p.z);
+    hi = std::max(hi, p.z);
+  }
+  return hi - lo;
+}
+
+void check_one_tree(const AlignedCloud& cloud, const WaveletInferOptions& o) {
+  const WaveletInference r = infer_wavelet_grammar(cloud, o);
+  const TreeShape t = shape_of(grow_text(r.ramus_text));
+  const double h = cloud_height(cloud);
+  INFO("roots " << t.roots << ", length " << t.length << ", axis-locked " << t.axis_locked
+                << ", longest " << t.longest << " of height " << h << ", lowest " << t.lowest
+                << ", widest child " << t.widest_child);
+  CHECK(t.roots == 1);
+  CHECK(t.length > 0);
+  CHECK(t.lowest >= -1e-5 * h);  // the text writes 6 significant digits
+  CHECK(t.widest_child <= 1.05);
+  CHECK(t.longest <= h / 3);
+  CHECK(t.axis_locked <= 0.10);
+  // The regrown tree reaches most of the scan's height.
+  CHECK(t.height >= 0.8 * h);
+}
+
+}  // namespace
+
+TEST_CASE("regrown wavelet tree: one piece from one root over many synthetic trees",
+          "[wavelet][regrown]") {
+  for (std::uint64_t seed = 1; seed <= 12; ++seed) {
+    INFO("seed " << seed);
+    const AlignedCloud cloud = fractal_tree_cloud(seed, seed % 2 ? 5 : 6);
+    WaveletInferOptions o;
+    o.grid = seed % 3 == 0 ? 32 : 64;
+    o.seed = seed;
+    check_one_tree(cloud, o);
+  }
+}
+
+TEST_CASE("regrown wavelet tree: one piece from one root on every readable real scan",
+          "[wavelet][regrown]") {
+  for (const char* name : {"adtree_tree1.xyz", "adtree_ahn3_delft.xyz", "plantscan3d_A3B4.asc",
+                           "pytlidar_tree_1.las", "rtwig_cloud.txt"}) {
+    const std::string path = std::string(RAMUS_SHARED_DIR) + "/data/" + name;
+    if (!std::filesystem::exists(path)) {
+      WARN("skipped: " << path << " is missing");
+      continue;
+    }
+    INFO(name);
+    const AlignedCloud cloud = align_cloud(read_point_cloud(path));
+    for (int grid : {64, 128}) {
+      INFO("grid " << grid);
+      WaveletInferOptions o;
+      o.grid = grid;
+      check_one_tree(cloud, o);
+    }
+  }
+}
+
+TEST_CASE("regrown wavelet tree: the same scan and seed give the same bytes",
+          "[wavelet][regrown]") {
+  const AlignedCloud cloud = fractal_tree_cloud(7);
+  WaveletInferOptions o;
+  o.seed = 3;
+  CHECK(infer_wavelet_grammar(cloud, o).ramus_text == infer_wavelet_grammar(cloud, o).ramus_text);
+}
