@@ -182,7 +182,6 @@ WaveletInference infer_wavelet_grammar(const AlignedCloud& input,
   // III-E joined into one tree per dyad, refining the coarser one from the scan's base
   // (tree_hierarchy.h), at the centroids of the points.
   HierarchyOptions ho;
-  ho.leaf_radius = to.leaf_radius;
   ho.offset = options.offset;
   const std::vector<LevelTree> hierarchy = tree_hierarchy(trees, cloud, grid, ho);
   LsystemTextOptions lo;

@@ -59,9 +59,12 @@ void link_children(LevelTree& t) {
   }
 }
 
-// Da Vinci's rule on areas (III-E): a segment carries the leaves above it; its width is capped
-// at one cell, which a coefficient describes (many short twigs would make trunks metres thick).
-void da_vinci(LevelTree& t, double leaf_radius) {
+// Da Vinci's rule on areas (III-E): a segment's area is the sum of the areas it carries, so its
+// width grows as the square root of the leaves above it. The widest segment (the trunk's foot)
+// is one cell, what a coefficient of the dyad describes; a fixed leaf width instead (half a
+// cell) made every segment of a fine dyad half a cell to one cell wide, twigs as thick as the
+// trunk, a crown of blocks.
+void da_vinci(LevelTree& t) {
   const std::vector<std::uint32_t> order = breadth_first(t);
   for (HierarchyNode& n : t.nodes) n.leaves = 0;
   for (std::size_t k = order.size(); k-- > 0;) {
@@ -69,9 +72,9 @@ void da_vinci(LevelTree& t, double leaf_radius) {
     if (n.leaves == 0) n.leaves = 1;
     if (n.parent != kNoParent) t.nodes[n.parent].leaves += n.leaves;
   }
-  for (HierarchyNode& n : t.nodes) {
-    n.width = std::min(2 * leaf_radius * std::sqrt(double(n.leaves)), 1.0) * t.cell;
-  }
+  std::uint32_t most = 1;
+  for (const HierarchyNode& n : t.nodes) most = std::max(most, n.leaves);
+  for (HierarchyNode& n : t.nodes) n.width = std::sqrt(double(n.leaves) / double(most)) * t.cell;
 }
 
 // Makes `to` a child of `from` through the points between them: an edge longer than one and a
@@ -228,7 +231,7 @@ LevelTree refine(const LevelTree& coarse, const DyadTree& dyad, const CellCentro
     join_members(t, cc, members[u], best);
   }
   link_children(t);
-  da_vinci(t, o.leaf_radius);
+  da_vinci(t);
   return t;
 }
 

@@ -62,7 +62,6 @@ struct LevelTree {
 };
 
 struct HierarchyOptions {
-  double leaf_radius = 0.25;  // Da Vinci: a one-leaf segment's radius, in cells of its dyad
   LRuleOffset offset = LRuleOffset::scaled;
 };
 
