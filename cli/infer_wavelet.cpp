@@ -85,7 +85,7 @@ int run_wavelet(const WaveletArgs& a, const InferCommonArgs& common, const Globa
       std::fprintf(stderr, "ramus infer: warning: %s\n", w.c_str());
     }
   }
-  print_result(r, common);
+  if (!global.quiet) print_result(r, common);
   return 0;
 }
 

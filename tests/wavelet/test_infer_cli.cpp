@@ -96,6 +96,16 @@ TEST_CASE("infer options: grid, axiom level, offset, scanner; same input same by
   CHECK(slurp(a) == slurp(b));
   CHECK(slurp(a).find("offset exact") != std::string::npos);
   CHECK(run_ramus({"check", a}).status == 0);
+  // -q: the same file, nothing printed.
+  const std::string c = (dir.path / "c.ramus").string();
+  std::vector<std::string> quiet = {"-q"};
+  quiet.insert(quiet.end(), common.begin(), common.end());
+  quiet.push_back("-o");
+  quiet.push_back(c);
+  const CliResult q = run_ramus(quiet);
+  REQUIRE(q.status == 0);
+  CHECK(q.out.empty());
+  CHECK(slurp(c) == slurp(a));
 }
 
 TEST_CASE("infer reports bad input and bad options with exit 1", "[infer][cli]") {
