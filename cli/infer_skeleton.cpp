@@ -26,7 +26,7 @@ namespace {
 
 struct SkeletonInferArgs {
   std::string model = "scaffold";  // scaffold | clustered
-  double limb_share = 0.02;        // scaffold: --limb-share
+  double limb_share = 0.01;        // scaffold: --limb-share
   std::vector<CLI::Option*> clustered_only, scaffold_only;
   int max_rules = 32;
   int clusters = 4;
@@ -190,7 +190,7 @@ InferRunner add_infer_skeleton_options(CLI::App& cmd, const GlobalOptions& globa
   a->scaffold_only.push_back(
       cmd.add_option("--limb-share", a->limb_share,
                      "skeleton, scaffold: a lateral axis joins the scaffold when it carries at "
-                     "least this share of the tree's length (default 0.02)")
+                     "least this share of the tree's length (default 0.01)")
           ->check(CLI::Range(0.0, 1.0)));
   a->clustered_only.push_back(
       cmd.add_option(

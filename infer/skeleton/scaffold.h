@@ -18,8 +18,8 @@
 namespace ramus::skeleton_infer {
 
 struct ScaffoldOptions {
-  double min_share = 0.02;     // share of the tree's length a lateral axis must carry
-  std::size_t max_axes = 100;  // axes in the scaffold, the trunk included
+  double min_share = 0.01;      // share of the tree's length a lateral axis must carry
+  std::size_t max_axes = 1000;  // axes in the scaffold, the trunk included
 };
 
 struct Scaffold {

@@ -44,8 +44,8 @@ double depth_below_root(const Skeleton& s) {
 
 // The plausibility of a grown tree against the tree it was inferred from (height `height`,
 // reaching `below` under its root, trunk lean `lean`): one piece from one root, nothing below
-// the base, no child wider than 1.05 x its parent, no internode over height / 3, the lean within
-// 10 degrees.
+// the base (within the axiom's drawing tolerance), no child wider than 1.05 x its parent, no
+// internode over height / 3, the lean within 10 degrees.
 void check_plausible(const Skeleton& grown, double height, double below, double lean,
                      const std::string& what) {
   INFO(what);
@@ -56,13 +56,19 @@ void check_plausible(const Skeleton& grown, double height, double below, double 
   CHECK(shape.pieces == 1);
   CHECK(shape.largest_piece_share == Approx(1.0));
   std::size_t under = 0, wider = 0, longer = 0;
+  double lowest = base_z;
   for (const SkeletonNode& n : grown.nodes) {
-    if (n.position.z < base_z - 1e-6 * height) ++under;
+    lowest = std::min(lowest, n.position.z);
+    // The axiom keeps the scaffold's bends to within 1 % of the height (Douglas-Peucker), so a
+    // drawn limb may pass that much below a measured one (the weeping tree's lowest whip tip:
+    // 0.26 %).
+    if (n.position.z < base_z - 0.01 * height) ++under;
     if (n.parent == kNoParent) continue;
     const SkeletonNode& p = grown.nodes[n.parent];
     if (n.radius > 1.05 * p.radius + 1e-12) ++wider;
     if (length(n.position - p.position) > height / 3) ++longer;
   }
+  INFO("lowest node " << (base_z - lowest) / height << " of the height below the base");
   CHECK(under == 0);
   CHECK(wider == 0);
   CHECK(longer == 0);
@@ -126,7 +132,7 @@ TEST_CASE("scaffold grammar: the example trees regrow their envelope, plausibly,
       // The budgets keep the input's total length, whatever the seed.
       CHECK(grown.total_length() == Approx(input.total_length()).epsilon(0.03));
     }
-    // Measured: broadleaf 0.90, conifer 0.79, weeping 0.88.
+    // Measured: broadleaf 0.93, conifer 0.95, weeping 0.93.
     CHECK(median(iou) >= 0.7);
   }
 }
@@ -163,7 +169,7 @@ TEST_CASE("scaffold grammar: every bundled scan regrows its envelope as well as 
                       std::string(scan_name) + " seed " + std::to_string(seed));
     }
     INFO("reconstruction " << reference << ", grown median " << median(iou));
-    // Measured (grown / reconstruction): 0.83/0.84, 0.53/0.53, 0.83/0.81, 0.57/0.56, 0.79/0.82.
+    // Measured (grown / reconstruction): 0.83/0.84, 0.53/0.53, 0.83/0.81, 0.56/0.57, 0.80/0.82.
     CHECK(median(iou) >= 0.9 * reference);
     CHECK(median(iou) >= 0.5);
   }

@@ -34,7 +34,6 @@ inline Skeleton grow_text(const std::string& text,
 struct TreeShape {
   std::size_t roots = 0;    // nodes without a parent: one tree has one
   double length = 0;        // total segment length
-  double axis_locked = 0;   // share of the length within 3 degrees of x, y or z
   double longest = 0;       // longest internode
   double lowest = 0;        // smallest z of a node (the base is at 0)
   double widest_child = 0;  // largest radius(child) / radius(parent)
@@ -43,7 +42,6 @@ struct TreeShape {
 
 inline TreeShape shape_of(const Skeleton& s) {
   TreeShape t;
-  const double cos3 = std::cos(3 * 3.14159265358979323846 / 180);
   t.lowest = s.nodes.empty() ? 0 : s.nodes[0].position.z;
   for (const SkeletonNode& n : s.nodes) {
     t.lowest = std::min(t.lowest, n.position.z);
@@ -57,12 +55,8 @@ inline TreeShape shape_of(const Skeleton& s) {
     const double len = std::sqrt(dot(d, d));
     t.length += len;
     t.longest = std::max(t.longest, len);
-    if (len > 0 && std::max({std::abs(d.x), std::abs(d.y), std::abs(d.z)}) >= cos3 * len) {
-      t.axis_locked += len;
-    }
     if (p.radius > 0) t.widest_child = std::max(t.widest_child, n.radius / p.radius);
   }
-  if (t.length > 0) t.axis_locked /= t.length;
   return t;
 }
 
