@@ -7,6 +7,14 @@
 
 namespace ramus::skeleton_infer {
 
+namespace {
+
+// A child continues its parent's axis only if it carries at least this share of what the
+// heaviest child carries.
+constexpr double kContinuationWeight = 0.5;
+
+}  // namespace
+
 Scaffold select_scaffold(const BranchRules& rules, const ScaffoldOptions& options) {
   Scaffold s;
   const std::size_t n = rules.internodes.size();
@@ -15,12 +23,6 @@ Scaffold select_scaffold(const BranchRules& rules, const ScaffoldOptions& option
   s.reach.assign(n, 0.0);
   s.in_scaffold.assign(n, 0);
   if (n == 0) return s;
-  for (std::size_t i = 0; i < n; ++i) {
-    const NodeRule& r = rules.rules[i];
-    for (const ChildRule* c = rules.begin(r); c != rules.end(r); ++c) {
-      if (rules.internodes[c->internode].continuation) s.continuation[i] = c->internode;
-    }
-  }
   // Children before parents: by decreasing depth (ties by index, so the order is fixed).
   std::vector<std::uint32_t> order(n);
   std::iota(order.begin(), order.end(), 0u);
@@ -30,8 +32,27 @@ Scaffold select_scaffold(const BranchRules& rules, const ScaffoldOptions& option
   for (std::uint32_t i : order) {
     const Internode& in = rules.internodes[i];
     s.carried[i] += in.length;
-    s.reach[i] = in.chord + (s.continuation[i] != kNone ? s.reach[s.continuation[i]] : 0.0);
     if (in.parent != kNone) s.carried[in.parent] += s.carried[i];
+  }
+  // An axis goes on into its straightest child among those that carry at least half as much as
+  // the heaviest. The straightest alone let a conifer's trunk leave its leader for a stub the
+  // reconstruction left at a whorl (the top metre became a shoot, regrown as a bush); the
+  // heaviest alone makes a sideways limb the trunk's continuation and the leader its lateral,
+  // so that branch_angle (scaffold_grammar.h) would turn the leader outwards.
+  for (std::size_t i = 0; i < n; ++i) {
+    const NodeRule& r = rules.rules[i];
+    double heaviest = 0;
+    for (const ChildRule* c = rules.begin(r); c != rules.end(r); ++c)
+      heaviest = std::max(heaviest, s.carried[c->internode]);
+    double straightest = 1e300;
+    for (const ChildRule* c = rules.begin(r); c != rules.end(r); ++c) {
+      if (s.carried[c->internode] < kContinuationWeight * heaviest) continue;
+      if (c->theta < straightest) straightest = c->theta, s.continuation[i] = c->internode;
+    }
+  }
+  for (std::uint32_t i : order) {
+    const Internode& in = rules.internodes[i];
+    s.reach[i] = in.chord + (s.continuation[i] != kNone ? s.reach[s.continuation[i]] : 0.0);
   }
 
   for (std::size_t t = 1; t < rules.tree_length.size(); ++t) {

@@ -4,9 +4,9 @@
 // outline, where its main limbs go. Statistics of internodes cannot say where the limbs are, so
 // the scaffold is kept as measured (the inferred grammar's axiom draws it) and only what hangs
 // from it -- the finer shoots -- grows from species-level rules. Each axis is a chain of
-// continuation internodes (branch_rules.h); a lateral axis joins the scaffold when the internodes
-// it carries (its subtree) hold at least `min_share` of the tree's length, the largest first,
-// until `max_axes` axes are taken.
+// continuation internodes (each the child that carries the most); a lateral axis joins the
+// scaffold when the internodes it carries (its subtree) hold at least `min_share` of the tree's
+// length, the largest first, until `max_axes` axes are taken.
 #pragma once
 
 #include <cstddef>

@@ -88,8 +88,9 @@ class AxiomWriter {
   // The turn that takes the turtle's heading to `d`, applied to the frame as the turtle will
   // apply the written numbers.
   //
-  // The first turn of a branch is written as branch_angle plus the branch's own difference from
-  // it, so that `-D branch_angle=...` opens or closes every branch and bud at once.
+  // The first turn of a branch is written as a multiple of branch_angle, so that
+  // `-D branch_angle=...` opens or closes every branch and bud at once, in proportion (a shift
+  // by the difference instead turned the narrowest branches past their parent's heading).
   void turn_to(const Vec3& d) {
     const bool opening = opening_;
     opening_ = false;
@@ -108,12 +109,10 @@ class AxiomWriter {
       frame_.orthonormalize();
     }
     double written = 0;
-    if (opening) {
-      const double rest = theta - branch_angle_;
-      const std::string rest_text = grammar_number(std::abs(rest));
-      out_ +=
-          "&(branch_angle" + (rest_text == "0" ? "" : (rest < 0 ? " - " : " + ") + rest_text) + ")";
-      written = branch_angle_ + (rest < 0 ? -1 : 1) * std::stod(rest_text);
+    if (opening && branch_angle_ > 0) {
+      const std::string factor = grammar_number(theta / branch_angle_);
+      out_ += "&(" + factor + " * branch_angle)";
+      written = std::stod(factor) * branch_angle_;
     } else {
       const std::string theta_text = grammar_number(theta);
       out_ += "&(" + theta_text + ")";

@@ -132,7 +132,7 @@ TEST_CASE("scaffold grammar: the example trees regrow their envelope, plausibly,
       // The budgets keep the input's total length, whatever the seed.
       CHECK(grown.total_length() == Approx(input.total_length()).epsilon(0.03));
     }
-    // Measured: broadleaf 0.93, conifer 0.95, weeping 0.93.
+    // Measured: broadleaf 0.93, conifer 0.95, weeping 0.92.
     CHECK(median(iou) >= 0.7);
   }
 }
