@@ -199,14 +199,16 @@ LevelTree refine(const LevelTree& coarse, const DyadTree& dyad, const CellCentro
     t.nodes.push_back(n);
     t.cell_of.push_back(cells[i]);
   }
-  // A coarse node with no finer cell stays, where it is (III-E saw wood there).
+  // A coarse node with no finer cell stays, where it is (III-E saw wood there); so does every
+  // trunk node, first among its members, so that its cells join the trunk where it is.
   for (std::uint32_t u = 1; u < coarse.nodes.size(); ++u) {
-    if (!members[u].empty()) continue;
+    if (!members[u].empty() && !coarse.nodes[u].trunk) continue;
     HierarchyNode n;
     n.position = coarse.nodes[u].position;
     n.owner = u;
     n.inherited = true;
-    members[u].push_back(std::uint32_t(t.nodes.size()));
+    n.trunk = coarse.nodes[u].trunk;
+    members[u].insert(members[u].begin(), std::uint32_t(t.nodes.size()));
     t.nodes.push_back(n);
     t.cell_of.push_back({-1, -1, -1});
   }
@@ -222,6 +224,7 @@ LevelTree refine(const LevelTree& coarse, const DyadTree& dyad, const CellCentro
     const Vec3 from = t.nodes[t.entry[coarse.nodes[u].parent]].position;
     std::uint32_t best = members[u][0];
     for (std::uint32_t m : members[u]) {
+      if (coarse.nodes[u].trunk) break;  // a trunk node is its cells' entry
       if (dist2(t.nodes[m].position - from) < dist2(t.nodes[best].position - from)) {
         best = m;
       }
@@ -282,6 +285,44 @@ Vec3 trunk_foot(const AlignedCloud& cloud, double cell) {
   return n > 0 ? Vec3(sum.x / n, sum.y / n, lo) : Vec3(0, 0, lo);
 }
 
+// The trunk from the foot upwards (docs/wavelets.md, "The trunk first"): in slabs `step` thick,
+// the centre of the points within `window` (horizontally) of where the trunk so far predicts
+// it, moved three times to their mean; it ends at the first slab with no point there. A
+// straight trunk has no significant coefficient in any dyad (no diagonal detail), so the dyad
+// trees joined it through branch tips: a conifer's trunk wandered from whorl to whorl.
+std::vector<Vec3> trace_trunk(const AlignedCloud& cloud, const Vec3& foot, double step,
+                              double window) {
+  double top = foot.z;
+  for (const Vec3& p : cloud.points) top = std::max(top, p.z);
+  std::vector<std::vector<Vec3>> slabs(
+      std::size_t(std::max(0.0, std::ceil((top - foot.z) / step))));
+  for (const Vec3& p : cloud.points) {
+    const double k = std::floor((p.z - foot.z) / step + 0.5);
+    if (k >= 1 && k <= double(slabs.size())) slabs[std::size_t(k) - 1].push_back(p);
+  }
+  std::vector<Vec3> path{foot};
+  for (const std::vector<Vec3>& slab : slabs) {
+    const Vec3 last = path.back();
+    Vec3 centre = path.size() > 1 ? last + (last - path[path.size() - 2]) : last;
+    bool found = false;
+    for (int shift = 0; shift < 3; ++shift) {
+      Vec3 sum{0, 0, 0};
+      double n = 0;
+      for (const Vec3& p : slab) {
+        if (std::hypot(p.x - centre.x, p.y - centre.y) > window) continue;
+        sum += p;
+        n += 1;
+      }
+      if (n == 0) break;
+      centre = sum / n;
+      found = true;
+    }
+    if (!found) break;
+    path.push_back(centre);
+  }
+  return path;
+}
+
 }  // namespace
 
 std::vector<LevelTree> tree_hierarchy(const std::vector<DyadTree>& dyads, const AlignedCloud& cloud,
@@ -296,6 +337,17 @@ std::vector<LevelTree> tree_hierarchy(const std::vector<DyadTree>& dyads, const 
   base.nodes[0].position = trunk_foot(cloud, finest);
   base.nodes[0].leaves = 1;
   base.cell_of.push_back({-1, -1, -1});
+  // The trunk, in steps of a cell of the second dyad, within half of one.
+  const double second = grid.voxel_size * double(grid.n) / 4;
+  const std::vector<Vec3> trunk = trace_trunk(cloud, base.nodes[0].position, second, second / 4);
+  for (std::size_t k = 1; k < trunk.size(); ++k) {
+    HierarchyNode n;
+    n.position = trunk[k];
+    n.parent = std::uint32_t(k - 1);
+    n.trunk = true;
+    base.nodes.push_back(n);
+    base.cell_of.push_back({-1, -1, -1});
+  }
   link_children(base);
   std::vector<LevelTree> out;
   out.reserve(dyads.size());

@@ -8,8 +8,10 @@
 // diagonal detail, is missing from every dyad. Here the trees are built from the coarsest dyad
 // down so that every finer tree refines the coarser one:
 //
-// - Level "-1" is the base alone: the foot of the trunk, at the height of the scan's lowest
-//   point (III-A's root, the origin), under the densest column of the lowest 5 % of the points.
+// - Level "-1" is the base: the foot of the trunk, at the height of the scan's lowest point
+//   (III-A's root, the origin), under the densest column of the lowest 5 % of the points; and
+//   the trunk traced up from it through the points (trace_trunk in the .cpp), whose nodes stay
+//   in every finer tree as the entries of the cells they own.
 // - Dyad j's significant cells (III-E's nodes; positions: cell_centroids.h) each belong to one
 //   node of tree j - 1, its *owner*: the node whose cell holds them (the box of Eq. 2-3 for a
 //   single cell, in the scaled or the exact reading), or the nearest node when that cell is not
@@ -47,6 +49,7 @@ struct HierarchyNode {
   std::uint32_t leaves = 0;          // leaves in its subtree (Da Vinci weight, III-E)
   double width = 0;                  // of the segment from its parent, metres
   bool inherited = false;            // kept from the coarser tree (no significant cell here)
+  bool trunk = false;                // on the trunk traced from the foot (kept in every dyad)
 };
 
 struct LevelTree {

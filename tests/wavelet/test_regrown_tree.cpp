@@ -7,6 +7,7 @@
 #include <catch2/catch.hpp>
 #include <filesystem>
 
+#include "core/rng.h"
 #include "formats/point_cloud_io.h"
 #include "fractal_cloud.h"
 #include "infer/reconstruct.h"
@@ -112,4 +113,45 @@ TEST_CASE("regrown wavelet tree: the same scan and seed give the same bytes",
   WaveletInferOptions o;
   o.seed = 3;
   CHECK(infer_wavelet_grammar(cloud, o).ramus_text == infer_wavelet_grammar(cloud, o).ramus_text);
+}
+
+TEST_CASE("regrown wavelet tree: a conifer's trunk runs from the foot to the top",
+          "[wavelet][regrown]") {
+  // A straight vertical trunk 10 high (points on its bark) with a whorl of 5 horizontal
+  // branches every metre, shorter towards the top: the trunk has no significant coefficient in
+  // any dyad, and the dyad trees alone joined the whorls through their branch tips.
+  PointCloud scan;
+  ramus::Rng rng(3);
+  auto add = [&](const Vec3& p) { scan.positions.push_back(Vec3f(p)); };
+  for (int i = 0; i < 600; ++i) {  // a thin trunk, half hidden by the whorls
+    const double z = rng.uniform(0, 10), a = rng.uniform(0, 3.1416);
+    add({0.08 * std::cos(a), 0.08 * std::sin(a), z});
+  }
+  for (int w = 1; w <= 9; ++w) {
+    const double z = w, reach = 3.0 * (10 - z) / 9;
+    for (int b = 0; b < 5; ++b) {
+      const double a = b * 1.2566 + w * 0.5;
+      for (int i = 0; i < 150; ++i) {
+        const double r = rng.uniform(0.1, reach);
+        // drooping towards the tips, as spruce branches do
+        add({r * std::cos(a), r * std::sin(a), z - 0.05 * r * r + rng.uniform(-0.03, 0.03)});
+      }
+    }
+  }
+  const AlignedCloud cloud = align_cloud(scan);
+  WaveletInferOptions o;
+  o.grid = 64;
+  const Skeleton grown = check_one_tree(cloud, o);
+  // Nodes near the trunk's axis reach the top (within a cell of the finest dyad of the axis).
+  const Vec3 root = grown.nodes[grown.roots().front()].position;
+  const double cell = 2 * 10.0 / 64;
+  double top_on_axis = 0, top = 0;
+  for (const SkeletonNode& n : grown.nodes) {
+    top = std::max(top, n.position.z - root.z);
+    if (std::hypot(n.position.x - root.x, n.position.y - root.y) <= 1.5 * cell)
+      top_on_axis = std::max(top_on_axis, n.position.z - root.z);
+  }
+  INFO("top " << top << ", top on the axis " << top_on_axis);
+  CHECK(top_on_axis >= 0.9 * top);
+  CHECK(shape::lean_degrees(grown) <= 10);
 }
