@@ -60,22 +60,10 @@ std::vector<Vec3> track_trunk(const std::vector<std::vector<Vec3>>& slices, int 
   for (std::size_t k = 0; k < slices.size(); ++k) {
     const std::vector<Vec3>& slice = slices[k];
     if (slice.empty()) continue;
-    Vec3 centre = predict(z0 + (double(first + int(k)) + 0.5) * thick);
-    bool found = false;
-    for (int shift = 0; shift < kLeanShifts; ++shift) {
-      Vec3 sum;
-      double n = 0;
-      for (const Vec3& p : slice) {
-        if (std::hypot(p.x - centre.x, p.y - centre.y) <= w) {
-          sum += p;
-          n += 1;
-        }
-      }
-      if (n == 0) break;
-      centre = sum / n;
-      found = true;
-    }
+    const std::optional<Vec3> found =
+        trunk_centre(slice, predict(z0 + (double(first + int(k)) + 0.5) * thick), w);
     if (!found) continue;
+    const Vec3 centre = *found;
     centres.push_back(centre);
     const double above = centre.z - z0;
     if (above >= kLeanBandLow * h && above <= kLeanBandHigh * h) band.push_back(centre);
@@ -120,6 +108,24 @@ double lean_from(const std::vector<Vec3>& points, const Vec3& b0, double z0, dou
 }
 
 }  // namespace
+
+std::optional<Vec3> trunk_centre(const std::vector<Vec3>& slab, Vec3 start, double window,
+                                 int shifts) {
+  std::optional<Vec3> centre;
+  for (int shift = 0; shift < shifts; ++shift) {
+    Vec3 sum{0, 0, 0};
+    double n = 0;
+    for (const Vec3& p : slab) {
+      if (std::hypot(p.x - start.x, p.y - start.y) > window) continue;
+      sum += p;
+      n += 1;
+    }
+    if (n == 0) break;
+    start = sum / n;
+    centre = start;
+  }
+  return centre;
+}
 
 double trunk_lean_degrees(const std::vector<Vec3>& points) {
   const double nan = std::numeric_limits<double>::quiet_NaN();

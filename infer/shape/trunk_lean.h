@@ -14,6 +14,7 @@
 // broadleaf, whose drooping twigs hold more of the band's samples than its trunk does.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/vec3.h"
@@ -24,6 +25,12 @@ inline constexpr double kLeanBandLow = 0.1;   // share of the height where the b
 inline constexpr double kLeanBandHigh = 0.3;  // and where it ends
 inline constexpr int kLeanSlices = 64;        // slice thickness: height / 64
 inline constexpr int kLeanShifts = 3;         // mean-shift steps per slice
+
+// The centre of a slab of a trunk: starting at `start`, moved `shifts` times to the mean of the
+// points within `window` of it horizontally (mean shift); nothing when no point is that close.
+// The trunk lean tracks a trunk with it, and so does wavelet inference (tree_hierarchy.cpp).
+std::optional<Vec3> trunk_centre(const std::vector<Vec3>& slab, Vec3 start, double window,
+                                 int shifts = kLeanShifts);
 
 // The lean in degrees in [0, 90); NaN when it is undefined (no height, no trunk found in the
 // band).

@@ -8,6 +8,7 @@
 #include <optional>
 #include <unordered_map>
 
+#include "infer/shape/trunk_lean.h"
 #include "infer/wavelet/cell_centroids.h"
 #include "infer/wavelet/emst.h"
 
@@ -303,22 +304,10 @@ std::vector<Vec3> trace_trunk(const AlignedCloud& cloud, const Vec3& foot, doubl
   std::vector<Vec3> path{foot};
   for (const std::vector<Vec3>& slab : slabs) {
     const Vec3 last = path.back();
-    Vec3 centre = path.size() > 1 ? last + (last - path[path.size() - 2]) : last;
-    bool found = false;
-    for (int shift = 0; shift < 3; ++shift) {
-      Vec3 sum{0, 0, 0};
-      double n = 0;
-      for (const Vec3& p : slab) {
-        if (std::hypot(p.x - centre.x, p.y - centre.y) > window) continue;
-        sum += p;
-        n += 1;
-      }
-      if (n == 0) break;
-      centre = sum / n;
-      found = true;
-    }
-    if (!found) break;
-    path.push_back(centre);
+    const Vec3 predicted = path.size() > 1 ? last + (last - path[path.size() - 2]) : last;
+    const std::optional<Vec3> centre = shape::trunk_centre(slab, predicted, window);
+    if (!centre) break;
+    path.push_back(*centre);
   }
   return path;
 }
