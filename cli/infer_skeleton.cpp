@@ -81,9 +81,6 @@ auto infer_and_write(const InferCommonArgs& common, const Infer& infer) {
 // The default model: the scaffold as measured and shoots grown from species-level params.
 int write_scaffold_grammar(const InferCommonArgs& common, const SkeletonInferArgs& a,
                            const Skeleton& skeleton, const GlobalOptions& global) {
-  for (const CLI::Option* o : a.clustered_only) {
-    if (o->count() > 0) throw UserError(o->get_name() + " applies to --model clustered only");
-  }
   skeleton_infer::ScaffoldGrammarOptions so;
   so.scaffold.min_share = a.limb_share;
   so.tropism = !a.no_tropism;
@@ -109,6 +106,13 @@ int write_scaffold_grammar(const InferCommonArgs& common, const SkeletonInferArg
 
 int run_skeleton_infer(const InferCommonArgs& common, const SkeletonInferArgs& a,
                        const GlobalOptions& global) {
+  // Options of the other model are errors before any work (a reconstruction can take minutes).
+  const bool scaffold = a.model == "scaffold";
+  for (const CLI::Option* o : scaffold ? a.clustered_only : a.scaffold_only) {
+    if (o->count() > 0)
+      throw UserError(o->get_name() + " applies to --model " +
+                      (scaffold ? "clustered" : "scaffold") + " only");
+  }
   SkeletonSourceOptions so;
   so.first_seed = common.seed;  // a grammar (.ramus) is grown once with this seed
   so.tree_index = a.tree_index;
@@ -136,9 +140,6 @@ int run_skeleton_infer(const InferCommonArgs& common, const SkeletonInferArgs& a
     }
   }
   if (a.model == "scaffold") return write_scaffold_grammar(common, a, skeleton, global);
-  for (const CLI::Option* o : a.scaffold_only) {
-    if (o->count() > 0) throw UserError(o->get_name() + " applies to --model scaffold only");
-  }
   skeleton_infer::GrammarOptions go;
   go.max_rules = a.max_rules;
   go.cluster.max_clusters = a.clusters;

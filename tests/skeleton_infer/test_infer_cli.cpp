@@ -1,6 +1,7 @@
 // `ramus infer --method skeleton` and `ramus compare` end to end: a real scan, a grammar, a
 // skeleton file, bad input.
 #include <catch2/catch.hpp>
+#include <filesystem>
 
 #include "../cli/cli_runner.h"
 #include "skeleton_fixtures.h"
@@ -42,8 +43,8 @@ TEST_CASE("infer skeleton cli: a real scan gives a grammar that checks and is fo
 TEST_CASE("infer skeleton cli: options, merge, and bad input", "[skeleton_infer]") {
   const std::string grammar = std::string(RAMUS_SOURCE_DIR) + "/examples/trees/conifer.ramus";
   const std::string out = skeleton_test::scratch("conifer_inferred.ramus").string();
-  auto r = run_ramus({"infer", grammar, "-o", out, "--method", "skeleton", "--model",
-                      "clustered", "--max-rules", "6", "--clusters", "3", "--merge", "10,15"});
+  auto r = run_ramus({"infer", grammar, "-o", out, "--method", "skeleton", "--model", "clustered",
+                      "--max-rules", "6", "--clusters", "3", "--merge", "10,15"});
   INFO(r.out);
   REQUIRE(r.status == 0);
   CHECK(r.out.find("merged branches") != std::string::npos);
@@ -61,6 +62,19 @@ TEST_CASE("infer skeleton cli: options, merge, and bad input", "[skeleton_infer]
   CHECK(r.out.find("error") != std::string::npos);
   r = run_ramus({"infer", "/nonexistent/x.json", "-o", out, "--method", "skeleton"});
   CHECK(r.status == 1);
+  // The options of the other model are errors, before the input is read or reconstructed.
+  const std::string never = skeleton_test::scratch("never_written.ramus").string();
+  std::filesystem::remove(never);
+  r = run_ramus(
+      {"infer", data("adtree_tree1.xyz"), "-o", never, "--method", "skeleton", "--max-rules", "5"});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("--max-rules applies to --model clustered only") != std::string::npos);
+  CHECK(r.out.find("reconstructed") == std::string::npos);
+  r = run_ramus({"infer", grammar, "-o", never, "--method", "skeleton", "--model", "clustered",
+                 "--limb-share", "0.1"});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("--limb-share applies to --model scaffold only") != std::string::npos);
+  CHECK(!std::filesystem::exists(never));
   const std::string bad = skeleton_test::write_temp("bad.json", "{\"format\": ");
   r = run_ramus({"infer", bad, "-o", out, "--method", "skeleton"});
   CHECK(r.status == 1);
