@@ -8,6 +8,7 @@
 
 #include <array>
 #include <catch2/catch.hpp>
+#include <cstdlib>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -133,6 +134,49 @@ TEST_CASE("preview draws scans as points and a georeferenced reconstruction upri
   CHECK(check_upright(out("r.glb"), "r_glb.png") == check_upright(out("r.ply"), "r_ply.png"));
   ok({"-q", "preview", out("s.ply"), "-o", out("s.svg")});
   CHECK(slurp(out("s.svg")).find("<rect x=") != std::string::npos);
+}
+
+// The share of pixels of two same-size PNGs that differ by more than 24 in a channel.
+double differing_share(const std::string& a, const std::string& b) {
+  int w = 0, h = 0, n = 0, w2 = 0, h2 = 0;
+  unsigned char* pa = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(a.data()),
+                                            int(a.size()), &w, &h, &n, 3);
+  unsigned char* pb = stbi_load_from_memory(reinterpret_cast<const unsigned char*>(b.data()),
+                                            int(b.size()), &w2, &h2, &n, 3);
+  REQUIRE(pa != nullptr);
+  REQUIRE(pb != nullptr);
+  REQUIRE(w == w2);
+  REQUIRE(h == h2);
+  std::size_t differ = 0;
+  for (std::size_t i = 0; i < std::size_t(w) * h; ++i) {
+    for (int c = 0; c < 3; ++c) {
+      if (std::abs(int(pa[3 * i + c]) - int(pb[3 * i + c])) > 24) {
+        ++differ;
+        break;
+      }
+    }
+  }
+  stbi_image_free(pa);
+  stbi_image_free(pb);
+  return double(differ) / double(std::size_t(w) * h);
+}
+
+TEST_CASE("preview skins a pieces glb, flattened or instanced, into the same tree",
+          "[cli][preview]") {
+  const std::string grammar = source("examples/pieces/almond.ramus");
+  ok({"-q", "build", grammar, "--target", "pieces", "-o", out("p.glb")});
+  ok({"-q", "build", grammar, "--target", "pieces", "-o", out("pf.glb"), "--flatten"});
+  ok({"-q", "build", grammar, "--target", "pieces", "-o", out("pi.glb"), "--gpu-instancing"});
+  for (const char* f : {"p", "pf", "pi"}) {
+    ok({"-q", "preview", out((std::string(f) + ".glb").c_str()), "-o",
+        out((std::string(f) + ".png").c_str()), "--size", "400x300"});
+  }
+  const std::string skinned = slurp(out("p.png"));
+  const std::array<Extent, 2> e = view_extents(skinned);
+  CHECK(e[0].rows > kHeight / 2);  // not empty
+  // Unskinned, the canonical file would show its few piece meshes at their bind poses.
+  CHECK(differing_share(skinned, slurp(out("pf.png"))) < 0.005);
+  CHECK(differing_share(skinned, slurp(out("pi.png"))) < 0.005);
 }
 
 TEST_CASE("preview refuses options that do not apply and broken files, writing nothing",
