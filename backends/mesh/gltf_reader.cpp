@@ -427,15 +427,9 @@ TreeMesh read_gltf_mesh(const std::string& path) {
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
     throw MeshError(path + ": cannot read the glTF file" + (err.empty() ? "" : ": " + err));
   }
-  Reader r{model, path, {}, {}, {}};
-  try {
-    r.run();
-  } catch (const MeshError& e) {
-    const std::string what = e.what();
-    if (what.rfind(path, 0) == 0) throw;
-    throw MeshError(path + ": " + what);
-  }
-  return r.out.finish(path);
+  Reader r{model, path, {}, {}, ReadMeshBuilder(path)};
+  r.run();
+  return r.out.finish();
 }
 
 }  // namespace ramus::mesh

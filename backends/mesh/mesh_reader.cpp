@@ -22,7 +22,7 @@ void ReadMeshBuilder::add(bool leaf, const std::array<Vec3, 3>& p,
                           const std::array<Vec3, 3>* normals) {
   for (const Vec3& v : p) {
     if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
-      throw MeshError("a vertex has a non-finite position");
+      throw MeshError(path_ + ": a vertex has a non-finite position");
     }
   }
   const Vec3 face = cross(p[1] - p[0], p[2] - p[0]);
@@ -37,8 +37,8 @@ void ReadMeshBuilder::add(bool leaf, const std::array<Vec3, 3>& p,
   }
 }
 
-TreeMesh ReadMeshBuilder::finish(const std::string& path) const {
-  if (bark_.empty() && leaves_.empty()) throw MeshError(path + ": the mesh has no triangles");
+TreeMesh ReadMeshBuilder::finish() const {
+  if (bark_.empty() && leaves_.empty()) throw MeshError(path_ + ": the mesh has no triangles");
   Vec3 lo{std::numeric_limits<double>::max(), std::numeric_limits<double>::max(),
           std::numeric_limits<double>::max()};
   Vec3 hi = -lo;
@@ -53,7 +53,7 @@ TreeMesh ReadMeshBuilder::finish(const std::string& path) const {
   // As local_origin does for skeletons: far from (0, 0, 0) the vertices are kept relative to a
   // whole-unit point at the base of the bounds, so floats keep millimetres.
   TreeMesh m;
-  m.name = std::filesystem::path(path).stem().string();
+  m.name = std::filesystem::path(path_).stem().string();
   const double reach = std::max({std::abs(lo.x), std::abs(lo.y), std::abs(lo.z), std::abs(hi.x),
                                  std::abs(hi.y), std::abs(hi.z)});
   if (reach > kFloatMillimetreRange) {
@@ -70,7 +70,7 @@ TreeMesh ReadMeshBuilder::finish(const std::string& path) const {
     }
   };
   if (bark_.size() + leaves_.size() > std::numeric_limits<std::uint32_t>::max()) {
-    throw MeshError(path + ": the mesh has too many triangles to draw");
+    throw MeshError(path_ + ": the mesh has too many triangles to draw");
   }
   fill(bark_, m.bark);
   fill(leaves_, m.leaves);

@@ -12,6 +12,7 @@
 
 #include <array>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "backends/mesh/tree_mesh.h"
@@ -29,12 +30,15 @@ TreeMesh read_openmesh_mesh(const std::string& path);
 // triangle corner (normals from the file when it has them, else the face's).
 class ReadMeshBuilder {
  public:
-  // `normals` may be null (flat shading from the face).
+  explicit ReadMeshBuilder(std::string path) : path_(std::move(path)) {}
+  // `normals` may be null (flat shading from the face). Throws MeshError ("<path>: ...") for a
+  // non-finite corner.
   void add(bool leaf, const std::array<Vec3, 3>& corners, const std::array<Vec3, 3>* normals);
-  // Throws MeshError ("<path>: ...") when no triangle was added.
-  TreeMesh finish(const std::string& path) const;
+  // Throws MeshError when no triangle was added.
+  TreeMesh finish() const;
 
  private:
+  std::string path_;  // for messages and the mesh's name
   struct Corner {
     Vec3 position, normal;
   };

@@ -75,7 +75,7 @@ TreeMesh read_openmesh_mesh(const std::string& path) {
   const bool normals = opt.check(OpenMesh::IO::Options::VertexNormal);
   const bool vertex_colours = opt.check(OpenMesh::IO::Options::VertexColor);
   const bool face_colours = opt.check(OpenMesh::IO::Options::FaceColor);
-  ReadMeshBuilder out;
+  ReadMeshBuilder out(path);
   for (const auto f : om.faces()) {
     std::array<Vec3, 3> c, n;
     int k = 0, green = 0;
@@ -90,7 +90,7 @@ TreeMesh read_openmesh_mesh(const std::string& path) {
     const bool leaf = face_colours ? greenish(om.color(f)) : green >= 2;
     out.add(leaf, c, normals ? &n : nullptr);
   }
-  return out.finish(path);
+  return out.finish();
 }
 
 }  // namespace ramus::mesh
