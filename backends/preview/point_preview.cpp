@@ -16,9 +16,17 @@
 namespace ramus::preview {
 namespace {
 
-// Dots half an output pixel in radius: a sparse airborne scan still reads as a crown, a dense
-// terrestrial one as a surface.
-constexpr float kDotRadius = 0.75f;
+// Dot radius in output pixels: three quarters of a pixel for a dense terrestrial scan, so it
+// reads as a surface with its gaps; larger for sparse ones (an airborne scan has a few thousand
+// points per tree), up to 2 pixels, a third of the spacing the points would have if spread
+// evenly over the view, so a sparse crown still reads as a crown and not as dust.
+float dot_radius(const View& v, const Vec3& lo, const Vec3& hi, std::size_t points) {
+  const double wide = std::max(hi.x - lo.x, hi.y - lo.y) * v.scale;
+  const double tall = (hi.z - lo.z) * v.scale;
+  const double spacing =
+      std::sqrt(std::max(wide * tall, 1.0) / double(std::max<std::size_t>(points, 1)));
+  return float(std::clamp(spacing / 3, 0.75, 2.0));
+}
 constexpr Rgb kScanColour{0.20f, 0.38f, 0.66f};
 
 struct Bounds {
@@ -84,10 +92,10 @@ std::vector<std::uint8_t> render_points_rgb(const PointCloud& cloud, const Previ
   Raster raster(o.width * f, o.height * f, kBackground);
   for (const View& view : make_views(b.lo, b.hi, o.width, o.height)) {
     const auto range = depth_range(view, b);
+    const float radius = dot_radius(view, b.lo, b.hi, cloud.size()) * float(f);
     for (const Vec3f& p : cloud.positions) {
       const Vec3f q = view.project(p);
-      raster.dot(q.x * float(f), q.y * float(f), q.z, kDotRadius * float(f),
-                 depth_shade(q.z, range));
+      raster.dot(q.x * float(f), q.y * float(f), q.z, radius, depth_shade(q.z, range));
     }
   }
   auto rgb = raster.resolve(f);
