@@ -44,6 +44,7 @@ int print_build() {
   std::printf("scans in      .ply .xyz .txt .asc .csv .las (1.0-1.4, formats 0-10) .pcd\n");
   std::printf(
       "meshes out    .glb .gltf (y up, MSFT_lod) .obj .ply (--up y|z); previews .png .svg\n");
+  std::printf("meshes in     .glb .gltf .obj .ply (ramus preview)\n");
   // From the codec's constants, so the line cannot fall behind the format again.
   std::printf(
       "binaries      .rmb version %u written, versions %u-%u read (docs/binary-format.md)\n",

@@ -20,6 +20,13 @@ constexpr Vec3T<T> z_up_to_y_up(const Vec3T<T>& v) {
   return {v.x, v.z, -v.y};
 }
 
+// The inverse, for readers of y-up files (glTF; OBJ and PLY that say "up y"): (x, y, z) ->
+// (x, -z, y), so z_up_to_y_up(y_up_to_z_up(v)) == v exactly.
+template <typename T>
+constexpr Vec3T<T> y_up_to_z_up(const Vec3T<T>& v) {
+  return {v.x, -v.z, v.y};
+}
+
 // A unit quaternion (x, y, z, w) of the z-up world as the same rotation seen in y-up: its axis,
 // the vector part, turns like any vector and its angle stays.
 template <typename T>

@@ -62,6 +62,25 @@ void Raster::triangle(const std::array<Vec3f, 3>& in, const Shader& shade) {
   }
 }
 
+void Raster::dot(float x, float y, float z, float radius, const Rgb& colour) {
+  if (!std::isfinite(x) || !std::isfinite(y) || !std::isfinite(z)) return;
+  const int x0 = std::max(0, int(std::floor(x - radius)));
+  const int x1 = std::min(w_ - 1, int(std::ceil(x + radius)));
+  const int y0 = std::max(0, int(std::floor(y - radius)));
+  const int y1 = std::min(h_ - 1, int(std::ceil(y + radius)));
+  const double r2 = double(radius) * radius;
+  for (int py = y0; py <= y1; ++py) {
+    for (int px = x0; px <= x1; ++px) {
+      const double dx = px + 0.5 - x, dy = py + 0.5 - y;
+      if (dx * dx + dy * dy > r2) continue;
+      float& d = depth_[std::size_t(py) * w_ + px];
+      if (z >= d) continue;
+      d = z;
+      colour_[std::size_t(py) * w_ + px] = colour;
+    }
+  }
+}
+
 std::vector<std::uint8_t> Raster::resolve(int f) const {
   f = std::max(f, 1);
   const int ow = w_ / f, oh = h_ / f;

@@ -32,6 +32,10 @@ class Raster {
   using Shader = std::function<bool(float b0, float b1, float b2, Rgb& out)>;
   void triangle(const std::array<Vec3f, 3>& v, const Shader& shade);
 
+  // A round dot of `radius` pixels about (x, y) at depth `z` (a point of a scan), depth-tested
+  // like a triangle: the pixels whose centres lie within the radius.
+  void dot(float x, float y, float z, float radius, const Rgb& colour);
+
   // Box-filtered downsampling by an integer factor, to 8-bit RGB.
   std::vector<std::uint8_t> resolve(int factor) const;
 

@@ -33,15 +33,20 @@ double mean_depth(const std::vector<Vec3f>& pts) {
   return pts.empty() ? 0 : s / double(pts.size());
 }
 
-void bark_shapes(const View& view, const mesh::MeshPart& part, std::vector<Shape>& out) {
+// Every triangle of `part` as a polygon; `leaf` picks the leaf colour (leaves read from a file
+// without card UVs are plain triangles).
+void triangle_shapes(const View& view, const mesh::MeshPart& part, bool leaf, bool cull,
+                     std::vector<Shape>& out) {
   for (std::size_t t = 0; t + 2 < part.indices.size(); t += 3) {
     const std::uint32_t i[3] = {part.indices[t], part.indices[t + 1], part.indices[t + 2]};
     const auto& p = part.positions;
-    if (!view.faces_viewer(p[i[0]], p[i[1]], p[i[2]])) continue;
+    const bool front = view.faces_viewer(p[i[0]], p[i[1]], p[i[2]]);
+    if (!front && cull) continue;
     Shape s;
     for (std::uint32_t k : i) s.points.push_back(view.project(p[k]));
-    const Vec3f n = part.normals[i[0]] + part.normals[i[1]] + part.normals[i[2]];
-    s.colour = shade_bark(view, n);
+    const Vec3f n = (part.normals[i[0]] + part.normals[i[1]] + part.normals[i[2]]) *
+                    (front ? 1.0f : -1.0f);  // two-sided: the face the viewer sees
+    s.colour = leaf ? shade_leaf(view, n) : shade_bark(view, n);
     s.depth = mean_depth(s.points);
     s.order = out.size();
     out.push_back(std::move(s));
@@ -69,14 +74,17 @@ void leaf_shapes(const View& view, const mesh::MeshPart& part, std::vector<Shape
 }  // namespace
 
 std::string render_svg(const mesh::TreeMesh& tree, const PreviewOptions& o) {
-  if (o.width < 16 || o.height < 16 || o.width > 8192 || o.height > 8192) {
-    throw std::invalid_argument("preview size must be between 16x16 and 8192x8192");
-  }
+  check_preview_options(o);
   std::vector<Shape> shapes;
   const auto views = make_views(tree, o.width, o.height);
+  const bool cards = tree.leaves.uvs.size() == tree.leaves.positions.size();
   for (const View& v : views) {
-    bark_shapes(v, tree.bark, shapes);
-    leaf_shapes(v, tree.leaves, shapes);
+    triangle_shapes(v, tree.bark, false, o.cull_back_faces, shapes);
+    if (cards) {
+      leaf_shapes(v, tree.leaves, shapes);
+    } else {
+      triangle_shapes(v, tree.leaves, true, o.cull_back_faces, shapes);
+    }
   }
   std::sort(shapes.begin(), shapes.end(), [](const Shape& a, const Shape& b) {
     return a.depth != b.depth ? a.depth > b.depth : a.order < b.order;

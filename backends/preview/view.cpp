@@ -31,6 +31,10 @@ std::array<View, 2> make_views(const mesh::TreeMesh& tree, int w, int h) {
     }
   }
   if (!any) lo = hi = Vec3{};
+  return make_views(lo, hi, w, h);
+}
+
+std::array<View, 2> make_views(const Vec3& lo, const Vec3& hi, int w, int h) {
   const Vec3 size = hi - lo;
   const double margin = 0.06;
   const double half = w / 2.0;

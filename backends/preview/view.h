@@ -21,7 +21,9 @@ struct View {
   bool faces_viewer(const Vec3f& a, const Vec3f& b, const Vec3f& c) const;
 };
 
-// Front and side views fitted into a picture of w x h pixels.
+// Front and side views of the box [lo, hi] fitted into a picture of w x h pixels.
+std::array<View, 2> make_views(const Vec3& lo, const Vec3& hi, int w, int h);
+// The same for the bounds of a tree's vertices.
 std::array<View, 2> make_views(const mesh::TreeMesh& tree, int w, int h);
 
 inline constexpr Rgb kBackground{0.96f, 0.96f, 0.94f};
