@@ -268,7 +268,9 @@ std::string grammar_text(const ScaffoldGrammarOptions& options, ScaffoldGrammar&
       double value;
       const char* what;
     } params[] = {
-        {"branch_angle", q.branch_angle, "mean angle of a lateral shoot to its parent (degrees)"},
+        {"branch_angle", q.branch_angle,
+         "mean angle of a lateral shoot to its parent (degrees); every branch of the axiom turns "
+         "by a multiple of it"},
         {"branch_angle_sd", q.branch_angle_sd, "its spread (degrees)"},
         {"kink_angle", q.kink_angle,
          "mean angle between successive internodes of a shoot (degrees)"},
