@@ -192,74 +192,10 @@ class Printer {
   void item(const ast::VoxelSetting& x, SourceSpan sp) { simple(fmt_voxel_setting(x), sp, 1); }
   void item(const ast::VoxelRule& x, SourceSpan sp) { simple(fmt_voxel_rule(x), sp, 1); }
 
-  // Module sequences longer than a line are broken between modules so that lines end by column
-  // kWidth where possible; continuation lines are indented by kContinuation spaces. A break
-  // never falls just after `[` or just before `]`, and falls before a `[` (a whole branch on the
-  // next line) when the line has one. `prefix` is the text before the first module (a space is
-  // added when there is one), `suffix` follows the last.
-  static constexpr std::size_t kWidth = 100;
-  static constexpr std::size_t kContinuation = 8;
-
+  // Module sequences longer than a line: wrap_modules (format.h).
   void wrapped(const std::string& prefix, const std::vector<std::string>& modules,
                const std::string& suffix) {
-    // Atoms: `[` joins the module after it, `]` the module before it.
-    std::vector<std::string> atoms;
-    bool join_next = false;
-    for (const std::string& m : modules) {
-      if (!atoms.empty() && (join_next || m == "]")) {
-        append_module(atoms.back(), m);
-      } else {
-        atoms.push_back(m);
-      }
-      join_next = m == "[";
-    }
-    if (atoms.empty()) {
-      out_ += prefix + suffix + "\n";
-      return;
-    }
-    atoms.back() += suffix;
-    std::string cur = prefix + " ";
-    std::size_t line_start = 0;  // index of the first atom on the current line
-    std::size_t i = 0;
-    while (i < atoms.size()) {
-      std::string next = cur;
-      if (i == line_start) {
-        next += atoms[i];
-      } else {
-        append_module(next, atoms[i]);
-      }
-      if (i == line_start || next.size() <= kWidth) {
-        cur = std::move(next);
-        ++i;
-        continue;
-      }
-      // Too long: break before the last `[` on this line, else before this atom.
-      std::size_t at = i;
-      for (std::size_t k = i; k > line_start; --k) {
-        if (atoms[k][0] == '[') {
-          at = k;
-          break;
-        }
-      }
-      out_ += line_text(prefix, atoms, line_start, at) + "\n";
-      cur = std::string(kContinuation, ' ');
-      line_start = i = at;
-    }
-    out_ += cur + "\n";
-  }
-
-  // The text of atoms [from, to) on one line: the prefix on the first line, else the indent.
-  static std::string line_text(const std::string& prefix, const std::vector<std::string>& atoms,
-                               std::size_t from, std::size_t to) {
-    std::string s = from == 0 ? prefix + " " : std::string(kContinuation, ' ');
-    for (std::size_t k = from; k < to; ++k) {
-      if (k == from) {
-        s += atoms[k];
-      } else {
-        append_module(s, atoms[k]);
-      }
-    }
-    return s;
+    out_ += wrap_modules(prefix, modules, suffix);
   }
 
   static std::string with(const std::string& a, const std::string& b) {

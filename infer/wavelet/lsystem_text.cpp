@@ -9,7 +9,7 @@
 #include <stdexcept>
 #include <unordered_set>
 
-#include "infer/wavelet/production_layout.h"
+#include "grammar/format.h"
 
 namespace ramus::wavelet {
 namespace {
@@ -289,7 +289,7 @@ LsystemText lsystem_text(const std::vector<LevelTree>& trees, const LsystemTextO
                         ", s * 0.5, " + width + ")");
     }
     r.productions_text += comment;
-    r.productions_text += production_layout("  V(a, e, l, s, w) " + key_text(p) + " ->", modules);
+    r.productions_text += wrap_modules("  V(a, e, l, s, w) " + key_text(p) + " ->", modules, ";");
     ++r.productions;
   }
   text += "}\n";

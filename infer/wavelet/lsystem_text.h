@@ -36,7 +36,8 @@ struct LsystemText {
   std::string params;   // the `param` lines, with their comments
   std::string lsystem;  // the block without its rewriting productions
   // The rewriting productions, each after its comment, already in `ramus fmt` layout
-  // (production_layout.h): they go before the block's closing brace after the layout pass.
+  // (wrap_modules, grammar/format.h): they go before the block's closing brace after the layout
+  // pass.
   std::string productions_text;
   std::size_t rules = 0;        // vectors with successors (L-rules)
   std::size_t productions = 0;  // written (distinct keys)

@@ -1,5 +1,5 @@
 // The productions of an inferred grammar are written in `ramus fmt` layout directly
-// (production_layout.h); over many synthetic trees and grids the whole file equals its
+// (wrap_modules, grammar/format.h); over many synthetic trees and grids the whole file equals its
 // formatted self, and short and long productions wrap as the formatter wraps them.
 #include <catch2/catch.hpp>
 
@@ -9,7 +9,6 @@
 #include "grammar/parser.h"
 #include "grammar/source.h"
 #include "infer/wavelet/infer_grammar.h"
-#include "infer/wavelet/production_layout.h"
 
 using namespace ramus;
 using namespace ramus::wavelet;
@@ -63,7 +62,7 @@ TEST_CASE("production layout: wrapping matches the formatter", "[wavelet][layout
     }
     while (depth-- > 0) modules.push_back("]");
     const std::string head = "  V(x, l, s, w) @ (0.5, " + std::to_string(trial) + ") ->";
-    const std::string production = production_layout(head, modules);
+    const std::string production = wrap_modules(head, modules, ";");
     const std::string text =
         "module V(x, l, s, w);\n\nlsystem t {\n  select nearest(x, l / s);\n"
         "  axiom V(1, 1, 1, 1);\n" +
