@@ -12,6 +12,7 @@
 #include <cstring>
 #include <set>
 
+#include "backends/mesh/gltf_accessors.h"
 #include "backends/mesh/mesh_reader.h"
 #include "backends/mesh/up_axis.h"
 
@@ -96,71 +97,23 @@ struct Reader {
 
   [[noreturn]] void fail(const std::string& what) const { throw MeshError(path + ": " + what); }
 
-  // The bytes of element 0 and the stride, after checking the accessor stays in its buffer.
+  // The shared accessor reading (gltf_accessors.h), its errors named with the file.
+  template <class Read>
+  auto checked(const Read& read) const {
+    try {
+      return read();
+    } catch (const gltf_accessors::AccessorError& e) {
+      fail(e.what());
+    }
+  }
   const unsigned char* data(const tinygltf::Accessor& a, std::size_t& stride) const {
-    if (a.bufferView < 0 || a.bufferView >= int(model.bufferViews.size())) {
-      fail("an accessor has no buffer view");
-    }
-    const tinygltf::BufferView& v = model.bufferViews[a.bufferView];
-    if (v.buffer < 0 || v.buffer >= int(model.buffers.size())) fail("a buffer view has no buffer");
-    const auto& bytes = model.buffers[v.buffer].data;
-    const int comps = tinygltf::GetNumComponentsInType(a.type);
-    const int size = tinygltf::GetComponentSizeInBytes(a.componentType);
-    if (comps <= 0 || size <= 0) fail("an accessor has an unknown type");
-    const std::size_t elem = std::size_t(comps) * std::size_t(size);
-    stride = v.byteStride ? v.byteStride : elem;
-    const std::size_t begin = v.byteOffset + a.byteOffset;
-    if (a.count > 0 && (begin + stride * (a.count - 1) + elem > bytes.size() ||
-                        a.byteOffset + stride * (a.count - 1) + elem > v.byteLength)) {
-      fail("an accessor reaches past its buffer");
-    }
-    return bytes.data() + begin;
+    return checked([&] { return gltf_accessors::element_data(model, a, stride); });
   }
-
   std::vector<Vec3> vec3s(int index, const char* what) const {
-    if (index < 0 || index >= int(model.accessors.size())) fail(std::string("no such ") + what);
-    const tinygltf::Accessor& a = model.accessors[index];
-    if (a.type != TINYGLTF_TYPE_VEC3 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
-      fail(std::string(what) + " must be float VEC3");
-    }
-    std::size_t stride = 0;
-    const unsigned char* p = data(a, stride);
-    std::vector<Vec3> v(a.count);
-    for (std::size_t i = 0; i < a.count; ++i) {
-      float f[3];
-      std::memcpy(f, p + i * stride, sizeof f);
-      v[i] = {f[0], f[1], f[2]};
-    }
-    return v;
+    return checked([&] { return gltf_accessors::vec3s(model, index, what); });
   }
-
   std::vector<std::uint32_t> indices(const tinygltf::Primitive& prim, std::size_t vertices) const {
-    std::vector<std::uint32_t> out;
-    if (prim.indices < 0) {
-      for (std::size_t i = 0; i < vertices; ++i) out.push_back(std::uint32_t(i));
-      return out;
-    }
-    if (prim.indices >= int(model.accessors.size())) fail("no such index accessor");
-    const tinygltf::Accessor& a = model.accessors[prim.indices];
-    std::size_t stride = 0;
-    const unsigned char* p = data(a, stride);
-    for (std::size_t i = 0; i < a.count; ++i) {
-      std::uint32_t v = 0;
-      if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
-        v = p[i * stride];
-      } else if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
-        std::uint16_t s;
-        std::memcpy(&s, p + i * stride, 2);
-        v = s;
-      } else if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
-        std::memcpy(&v, p + i * stride, 4);
-      } else {
-        fail("indices must be unsigned integers");
-      }
-      if (v >= vertices) fail("an index names a missing vertex");
-      out.push_back(v);
-    }
-    return out;
+    return checked([&] { return gltf_accessors::indices(model, prim, vertices); });
   }
 
   // Any accessor of `comps` components as doubles, row after row: float as it is, integers as

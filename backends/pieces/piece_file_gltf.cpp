@@ -1,5 +1,5 @@
 // A piece from a glTF 2.0 file (.gltf or .glb), read with tinygltf (this is the pieces back end's
-// only file that includes it). glTF has no quads, so the piece's mesh is written as triangles in
+// only file that reads it). glTF has no quads, so the piece's mesh is written as triangles in
 // pairs: triangles 2i and 2i+1 share an edge and together make quad i. Rims are nodes named
 // `rim:<name>` whose mesh has one primitive listing the six rim vertices in order (mode POINTS,
 // LINE_LOOP or LINE_STRIP); they are matched to the piece's vertices by position. Node transforms
@@ -11,80 +11,29 @@
 #include <cstring>
 #include <map>
 
+#include "backends/mesh/gltf_accessors.h"
 #include "backends/pieces/piece_build.h"
 
 namespace ramus::pieces {
 
 namespace {
 
-const unsigned char* accessor_data(const tinygltf::Model& m, const tinygltf::Accessor& a,
-                                   std::size_t& stride, const std::string& path) {
-  if (a.bufferView < 0 || a.bufferView >= int(m.bufferViews.size())) {
-    throw PiecesError(path + ": an accessor has no buffer view");
-  }
-  const tinygltf::BufferView& v = m.bufferViews[a.bufferView];
-  if (v.buffer < 0 || v.buffer >= int(m.buffers.size())) {
-    throw PiecesError(path + ": a buffer view has no buffer");
-  }
-  const auto& data = m.buffers[v.buffer].data;
-  int comps = tinygltf::GetNumComponentsInType(a.type);
-  int size = tinygltf::GetComponentSizeInBytes(a.componentType);
-  if (comps <= 0 || size <= 0) throw PiecesError(path + ": an accessor has an unknown type");
-  std::size_t elem = std::size_t(comps) * std::size_t(size);
-  stride = v.byteStride ? v.byteStride : elem;
-  std::size_t begin = v.byteOffset + a.byteOffset;
-  if (a.count > 0 && (begin + stride * (a.count - 1) + elem > data.size() ||
-                      a.byteOffset + stride * (a.count - 1) + elem > v.byteLength)) {
-    throw PiecesError(path + ": an accessor reaches past its buffer");
-  }
-  return data.data() + begin;
-}
-
+// The shared accessor reading (backends/mesh/gltf_accessors.h), its errors named with the file.
 std::vector<Vec3> read_vec3(const tinygltf::Model& m, int index, const std::string& path) {
-  if (index < 0 || index >= int(m.accessors.size())) throw PiecesError(path + ": no such accessor");
-  const tinygltf::Accessor& a = m.accessors[index];
-  if (a.type != TINYGLTF_TYPE_VEC3 || a.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
-    throw PiecesError(path + ": POSITION must be float VEC3");
+  try {
+    return gltf_accessors::vec3s(m, index, "POSITION");
+  } catch (const gltf_accessors::AccessorError& e) {
+    throw PiecesError(path + ": " + e.what());
   }
-  std::size_t stride = 0;
-  const unsigned char* p = accessor_data(m, a, stride, path);
-  std::vector<Vec3> out(a.count);
-  for (std::size_t i = 0; i < a.count; ++i) {
-    float f[3];
-    std::memcpy(f, p + i * stride, sizeof f);
-    out[i] = {f[0], f[1], f[2]};
-  }
-  return out;
 }
 
 std::vector<std::uint32_t> read_indices(const tinygltf::Model& m, const tinygltf::Primitive& prim,
                                         std::size_t vertex_count, const std::string& path) {
-  std::vector<std::uint32_t> out;
-  if (prim.indices < 0) {
-    for (std::size_t i = 0; i < vertex_count; ++i) out.push_back(std::uint32_t(i));
-    return out;
+  try {
+    return gltf_accessors::indices(m, prim, vertex_count);
+  } catch (const gltf_accessors::AccessorError& e) {
+    throw PiecesError(path + ": " + e.what());
   }
-  if (prim.indices >= int(m.accessors.size())) throw PiecesError(path + ": no such accessor");
-  const tinygltf::Accessor& a = m.accessors[prim.indices];
-  std::size_t stride = 0;
-  const unsigned char* p = accessor_data(m, a, stride, path);
-  for (std::size_t i = 0; i < a.count; ++i) {
-    std::uint32_t v = 0;
-    if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE) {
-      v = p[i * stride];
-    } else if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT) {
-      std::uint16_t s;
-      std::memcpy(&s, p + i * stride, 2);
-      v = s;
-    } else if (a.componentType == TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT) {
-      std::memcpy(&v, p + i * stride, 4);
-    } else {
-      throw PiecesError(path + ": indices must be unsigned integers");
-    }
-    if (v >= vertex_count) throw PiecesError(path + ": an index names a missing vertex");
-    out.push_back(v);
-  }
-  return out;
 }
 
 Mat4 node_local(const tinygltf::Node& n) {
