@@ -3,15 +3,14 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <filesystem>
 #include <limits>
 #include <map>
 #include <stdexcept>
 #include <tuple>
 
+#include "backends/preview/picture_file.h"
 #include "backends/preview/png.h"
 #include "backends/preview/view.h"
-#include "core/atomic_file.h"
 
 namespace ramus::preview {
 namespace {
@@ -76,13 +75,6 @@ Rgb depth_shade(double depth, std::pair<double, double> range) {
           std::min(1.0f, kScanColour.b * k)};
 }
 
-std::string hex(const Rgb& c) {
-  char buf[8];
-  auto b = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255)); };
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", b(c.r), b(c.g), b(c.b));
-  return buf;
-}
-
 }  // namespace
 
 std::vector<std::uint8_t> render_points_rgb(const PointCloud& cloud, const PreviewOptions& o) {
@@ -137,22 +129,12 @@ std::string render_points_svg(const PointCloud& cloud, const PreviewOptions& o) 
   std::stable_sort(squares.begin(), squares.end(),
                    [](const Square& a, const Square& c) { return a.depth > c.depth; });
   const std::pair<double, double> ranges[2] = {depth_range(views[0], b), depth_range(views[1], b)};
-  std::string svg;
+  std::string svg = svg_open(o.width, o.height);
   char buf[160];
-  std::snprintf(buf, sizeof buf,
-                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 "
-                "0 %d %d\">\n",
-                o.width, o.height, o.width, o.height);
-  svg += buf;
-  svg += "<rect width=\"100%\" height=\"100%\" fill=\"" + hex(kBackground) + "\"/>\n";
-  std::snprintf(buf, sizeof buf,
-                "<line x1=\"%d\" y1=\"0\" x2=\"%d\" y2=\"%d\" stroke=\"#cdcdcd\"/>\n", o.width / 2,
-                o.width / 2, o.height);
-  svg += buf;
   for (const Square& s : squares) {
     std::snprintf(buf, sizeof buf,
                   "<rect x=\"%d\" y=\"%d\" width=\"1\" height=\"1\" fill=\"%s\"/>\n", s.x, s.y,
-                  hex(depth_shade(s.depth, ranges[s.view])).c_str());
+                  svg_colour(depth_shade(s.depth, ranges[s.view])).c_str());
     svg += buf;
   }
   svg += "</svg>\n";
@@ -161,14 +143,9 @@ std::string render_points_svg(const PointCloud& cloud, const PreviewOptions& o) 
 
 void write_points_preview(const PointCloud& cloud, const std::string& path,
                           const PreviewOptions& o) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".png") {
-    write_file_atomically(path, render_points_png(cloud, o));
-  } else if (ext == ".svg") {
-    write_file_atomically(path, render_points_svg(cloud, o));
-  } else {
-    throw std::invalid_argument("a preview file name must end in .png or .svg: " + path);
-  }
+  write_picture(
+      path, [&] { return render_points_png(cloud, o); },
+      [&] { return render_points_svg(cloud, o); });
 }
 
 }  // namespace ramus::preview

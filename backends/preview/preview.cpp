@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cstdio>
-#include <filesystem>
 #include <stdexcept>
 
 #include "backends/mesh/leaf_shape.h"
+#include "backends/preview/picture_file.h"
 #include "backends/preview/png.h"
 #include "backends/preview/view.h"
-#include "core/atomic_file.h"
 
 namespace ramus::preview {
 void check_preview_options(const PreviewOptions& o) {
@@ -85,14 +84,8 @@ std::string render_png(const mesh::TreeMesh& tree, const PreviewOptions& o) {
 }
 
 void write_preview(const mesh::TreeMesh& tree, const std::string& path, const PreviewOptions& o) {
-  const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".png") {
-    write_file_atomically(path, render_png(tree, o));
-  } else if (ext == ".svg") {
-    write_file_atomically(path, render_svg(tree, o));
-  } else {
-    throw std::invalid_argument("a preview file name must end in .png or .svg: " + path);
-  }
+  write_picture(
+      path, [&] { return render_png(tree, o); }, [&] { return render_svg(tree, o); });
 }
 
 }  // namespace ramus::preview

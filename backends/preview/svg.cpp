@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "backends/mesh/leaf_shape.h"
+#include "backends/preview/picture_file.h"
 #include "backends/preview/preview.h"
 #include "backends/preview/view.h"
 
@@ -19,13 +20,6 @@ struct Shape {
   Rgb colour;
   std::vector<Vec3f> points;  // projected
 };
-
-std::string hex(const Rgb& c) {
-  char buf[8];
-  auto b = [](float v) { return int(std::lround(std::clamp(v, 0.0f, 1.0f) * 255)); };
-  std::snprintf(buf, sizeof buf, "#%02x%02x%02x", b(c.r), b(c.g), b(c.b));
-  return buf;
-}
 
 double mean_depth(const std::vector<Vec3f>& pts) {
   double s = 0;
@@ -89,21 +83,11 @@ std::string render_svg(const mesh::TreeMesh& tree, const PreviewOptions& o) {
   std::sort(shapes.begin(), shapes.end(), [](const Shape& a, const Shape& b) {
     return a.depth != b.depth ? a.depth > b.depth : a.order < b.order;
   });
-  std::string svg;
+  std::string svg = svg_open(o.width, o.height);
   char buf[96];
-  std::snprintf(buf, sizeof buf,
-                "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"%d\" height=\"%d\" viewBox=\"0 "
-                "0 %d %d\">\n",
-                o.width, o.height, o.width, o.height);
-  svg += buf;
-  svg += "<rect width=\"100%\" height=\"100%\" fill=\"" + hex(kBackground) + "\"/>\n";
-  std::snprintf(buf, sizeof buf,
-                "<line x1=\"%d\" y1=\"0\" x2=\"%d\" y2=\"%d\" stroke=\"#cdcdcd\"/>\n", o.width / 2,
-                o.width / 2, o.height);
-  svg += buf;
   svg += "<g stroke-width=\"0.5\" stroke-linejoin=\"round\">\n";
   for (const Shape& s : shapes) {
-    const std::string c = hex(s.colour);
+    const std::string c = svg_colour(s.colour);
     svg += "<polygon fill=\"" + c + "\" stroke=\"" + c + "\" points=\"";
     for (std::size_t k = 0; k < s.points.size(); ++k) {
       std::snprintf(buf, sizeof buf, k ? " %.2f,%.2f" : "%.2f,%.2f", s.points[k].x, s.points[k].y);
