@@ -18,8 +18,6 @@
 #include "cli/output_path.h"
 #include "cli/preview_input.h"
 #include "cli/read_file.h"
-#include "compiler/derive.h"
-#include "compiler/turtle.h"
 #include "formats/point_cloud_io.h"
 #include "formats/rmb/rmb.h"
 #include "formats/skeleton_json.h"
@@ -73,30 +71,7 @@ std::optional<Skeleton> grow_binary(const GrowArgs& a) {
   } catch (const DecompileError& e) {
     throw UserError(a.file + ": cannot decompile: " + e.what());
   }
-  const GrowOptions opt = to_grow_options(a);
-  SourceManager sources;
-  DiagnosticSink diags;
-  ir::Grammar g;
-  try {
-    g = lower_text(a.file, text, opt, sources, diags);
-  } catch (const GrowError& e) {
-    print_diagnostics(sources, diags);
-    if (!diags.has_errors()) throw UserError(a.file + ": " + e.what());
-    return std::nullopt;
-  }
-  print_diagnostics(sources, diags);
-  DeriveOptions d;
-  d.steps = opt.steps;
-  d.max_modules = opt.max_modules;
-  TurtleOptions t;
-  t.seed = g.settings.seed;
-  t.steps = opt.steps.value_or(g.settings.derive);
-  t.max_modules = opt.max_modules;
-  try {
-    return interpret(g, derive(g, d), t);
-  } catch (const DeriveError& e) {
-    throw UserError(e.what());
-  }
+  return grow_text_for_cli(a, text);
 }
 
 // The tree mesh of a grown or read skeleton, as `ramus build` makes LOD0.

@@ -9,13 +9,11 @@ namespace ramus::cli {
 
 namespace {
 
-// Runs one front-end step (lower_file or grow_file) with the CLI's handling of diagnostics:
-// warnings are printed and the result returned; errors in the grammar are printed and give
-// nullopt; a GrowError without a diagnostic (no such lsystem, ...) becomes a UserError.
-template <class Result>
-std::optional<Result> run_reporting(const GrowArgs& a,
-                                    Result (*step)(const std::string&, const GrowOptions&,
-                                                   SourceManager&, DiagnosticSink&)) {
+// Runs one front-end step (lower_file, grow_file or grow_text) with the CLI's handling of
+// diagnostics: warnings are printed and the result returned; errors in the grammar are printed and
+// give nullopt; a GrowError without a diagnostic (no such lsystem, ...) becomes a UserError.
+template <class Result, class Step>
+std::optional<Result> run_reporting(const GrowArgs& a, const Step& step) {
   const GrowOptions opt = to_grow_options(a);
   SourceManager sources;
   DiagnosticSink diags;
@@ -58,6 +56,13 @@ std::optional<ir::Grammar> lower_for_cli(const GrowArgs& a) {
 
 std::optional<Skeleton> grow_for_cli(const GrowArgs& a) {
   return run_reporting<Skeleton>(a, &grow_file);
+}
+
+std::optional<Skeleton> grow_text_for_cli(const GrowArgs& a, const std::string& text) {
+  return run_reporting<Skeleton>(
+      a, [&](const std::string& name, const GrowOptions& o, SourceManager& s, DiagnosticSink& d) {
+        return grow_text(name, text, o, s, d);
+      });
 }
 
 void print_diagnostics(const SourceManager& sources, DiagnosticSink& diags) {

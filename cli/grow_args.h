@@ -35,6 +35,8 @@ std::optional<ir::Grammar> lower_for_cli(const GrowArgs& args);
 // nullopt (the caller exits with 1); warnings are printed and growing goes on. Derivation
 // failures throw UserError.
 std::optional<Skeleton> grow_for_cli(const GrowArgs& args);
+// The same for grammar text already in memory (a decompiled .rmb), named args.file.
+std::optional<Skeleton> grow_text_for_cli(const GrowArgs& args, const std::string& text);
 
 // Prints the sink's diagnostics (sorted, as text with source lines and carets) to stderr.
 void print_diagnostics(const SourceManager& sources, DiagnosticSink& diags);

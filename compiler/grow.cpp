@@ -35,4 +35,9 @@ Skeleton grow_checked(const Program& program, const GrowOptions& options, Source
   return grow_lowered(lower_checked(program, options, sources, diagnostics), options);
 }
 
+Skeleton grow_text(const std::string& name, const std::string& text, const GrowOptions& options,
+                   SourceManager& sources, DiagnosticSink& diagnostics) {
+  return grow_lowered(lower_text(name, text, options, sources, diagnostics), options);
+}
+
 }  // namespace ramus

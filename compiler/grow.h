@@ -22,4 +22,8 @@ Skeleton grow_file(const std::string& path, const GrowOptions& options, SourceMa
 Skeleton grow_checked(const Program& program, const GrowOptions& options, SourceManager& sources,
                       DiagnosticSink& diagnostics);
 
+// The same for grammar text in memory (a decompiled .rmb), named `name` in diagnostics.
+Skeleton grow_text(const std::string& name, const std::string& text, const GrowOptions& options,
+                   SourceManager& sources, DiagnosticSink& diagnostics);
+
 }  // namespace ramus
