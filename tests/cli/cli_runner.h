@@ -10,6 +10,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -96,5 +97,21 @@ struct TempDir {
     return write_text(path / name, text);
   }
 };
+
+// The numbers of one JSON line {"file":"...","key":number,...} that the browser checks print
+// (string values are skipped).
+inline std::map<std::string, double> json_line_numbers(const std::string& line) {
+  std::map<std::string, double> out;
+  std::size_t at = 0;
+  while ((at = line.find('"', at)) != std::string::npos) {
+    const std::size_t end = line.find('"', at + 1);
+    if (end == std::string::npos) break;
+    const std::string key = line.substr(at + 1, end - at - 1);
+    at = end + 1;
+    if (at + 1 < line.size() && line[at] == ':' && line[at + 1] != '"')
+      out[key] = std::strtod(line.c_str() + at + 1, nullptr);
+  }
+  return out;
+}
 
 }  // namespace cli_test

@@ -12,26 +12,7 @@
 
 #include "cli_runner.h"
 
-namespace {
-
 namespace fs = std::filesystem;
-
-// The numbers of one JSON line {"file":"...","key":number,...}.
-std::map<std::string, double> numbers(const std::string& line) {
-  std::map<std::string, double> out;
-  std::size_t at = 0;
-  while ((at = line.find('"', at)) != std::string::npos) {
-    const std::size_t end = line.find('"', at + 1);
-    if (end == std::string::npos) break;
-    const std::string key = line.substr(at + 1, end - at - 1);
-    at = end + 1;
-    if (at + 1 < line.size() && line[at] == ':' && line[at + 1] != '"')
-      out[key] = std::strtod(line.c_str() + at + 1, nullptr);
-  }
-  return out;
-}
-
-}  // namespace
 
 TEST_CASE("three.js shows the bundled trees upright and one level of detail",
           "[cli][gltf][browser]") {
@@ -70,7 +51,7 @@ TEST_CASE("three.js shows the bundled trees upright and one level of detail",
   for (std::string line; std::getline(lines, line);) {
     if (line.rfind("{\"file\"", 0) != 0) continue;
     REQUIRE(k < files.size());
-    auto n = numbers(line);
+    auto n = cli_test::json_line_numbers(line);
     const double height = n["maxY"] - n["minY"];
     CHECK(height > n["maxX"] - n["minX"]);
     CHECK(height > n["maxZ"] - n["minZ"]);

@@ -19,22 +19,6 @@ using namespace output_test;
 
 namespace {
 
-// The numbers of one JSON line {"file":"...","key":number,...}.
-std::map<std::string, double> parse_line(const std::string& line) {
-  std::map<std::string, double> out;
-  std::size_t at = 0;
-  while ((at = line.find('"', at)) != std::string::npos) {
-    const std::size_t end = line.find('"', at + 1);
-    if (end == std::string::npos) break;
-    const std::string key = line.substr(at + 1, end - at - 1);
-    at = end + 1;
-    if (at < line.size() && line[at] == ':' && at + 1 < line.size() && line[at + 1] != '"') {
-      out[key] = std::strtod(line.c_str() + at + 1, nullptr);
-    }
-  }
-  return out;
-}
-
 // Runs the loader on `files`; false (after a warning) when Chromium cannot run here.
 bool load_in_three(const std::vector<fs::path>& files,
                    std::vector<std::map<std::string, double>>& results) {
@@ -50,7 +34,7 @@ bool load_in_three(const std::vector<fs::path>& files,
   REQUIRE(code == 0);
   std::istringstream lines(out);
   for (std::string line; std::getline(lines, line);)
-    if (line.rfind("{\"file\"", 0) == 0) results.push_back(parse_line(line));
+    if (line.rfind("{\"file\"", 0) == 0) results.push_back(cli_test::json_line_numbers(line));
   REQUIRE(results.size() == files.size());
   return true;
 }
@@ -142,7 +126,7 @@ TEST_CASE("three.js in headless Chromium loads the canonical, flattened and inst
   std::vector<std::map<std::string, double>> results;
   std::istringstream lines(out);
   for (std::string line; std::getline(lines, line);)
-    if (line.rfind("{\"file\"", 0) == 0) results.push_back(parse_line(line));
+    if (line.rfind("{\"file\"", 0) == 0) results.push_back(cli_test::json_line_numbers(line));
   REQUIRE(results.size() == 3);
   const double pieces = double(piece_count(f)), bones = double(bone_count(f));
 
