@@ -20,7 +20,6 @@ Scaffold select_scaffold(const BranchRules& rules, const ScaffoldOptions& option
   const std::size_t n = rules.internodes.size();
   s.continuation.assign(n, kNone);
   s.carried.assign(n, 0.0);
-  s.reach.assign(n, 0.0);
   s.in_scaffold.assign(n, 0);
   if (n == 0) return s;
   // Children before parents: by decreasing depth (ties by index, so the order is fixed).
@@ -50,11 +49,6 @@ Scaffold select_scaffold(const BranchRules& rules, const ScaffoldOptions& option
       if (c->theta < straightest) straightest = c->theta, s.continuation[i] = c->internode;
     }
   }
-  for (std::uint32_t i : order) {
-    const Internode& in = rules.internodes[i];
-    s.reach[i] = in.chord + (s.continuation[i] != kNone ? s.reach[s.continuation[i]] : 0.0);
-  }
-
   for (std::size_t t = 1; t < rules.tree_length.size(); ++t) {
     if (rules.tree_length[t] > rules.tree_length[s.tree]) s.tree = std::uint32_t(t);
   }

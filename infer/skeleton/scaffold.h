@@ -27,7 +27,6 @@ struct Scaffold {
   std::vector<std::uint32_t> roots;  // the tree's root internodes, the trunk first
   std::vector<std::uint32_t> continuation;  // per internode: its continuation child, or kNone
   std::vector<double> carried;    // per internode: path length of it and of all it carries
-  std::vector<double> reach;      // per internode: chord length of it and of its continuations
   std::vector<char> in_scaffold;  // per internode: drawn as measured
   std::size_t axes = 0;
   double tree_length = 0;

@@ -52,7 +52,6 @@ SpeciesParams fit_species_params(const BranchRules& rules, const Scaffold& scaff
     if (!scaffold.in_scaffold[i]) fine.push_back(i);
   }
   const std::vector<std::uint32_t>& used = fine.size() >= kMinSamples ? fine : all;
-  p.samples = used.size();
 
   std::vector<double> branch, kink, cont_width, lat_width, share, chords, lat_side, kink_side;
   std::size_t going = 0, one = 0, two = 0;

@@ -31,8 +31,7 @@ struct SpeciesParams {
   double p_one = 0.5, p_two = 0.1;  // internodes that go on with one, with two or more laterals
   double min_internode = 0, max_internode = 0;  // internode chords kept in this range
   double elasticity = 0;                        // gravitropism (ABOP 2.2), fitted by tropism_fit.h
-  int depth = 1;            // derivation steps: the deepest chain of internodes of a shoot
-  std::size_t samples = 0;  // internodes the fit used
+  int depth = 1;  // derivation steps: the deepest chain of internodes of a shoot
 };
 
 // `rules` are measured from the bent heading when a tropism is written (tropism_fit.h); `height`
