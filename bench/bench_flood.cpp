@@ -15,8 +15,8 @@
 #include "backends/mesh/tree_mesh.h"
 #include "compiler/grow.h"
 #include "formats/point_cloud_io.h"
-#include "infer/flood/flood_skeleton.h"
-#include "infer/merge/branch_merge.h"
+#include "reconstruct/flood/flood_skeleton.h"
+#include "reconstruct/merge/branch_merge.h"
 #include "tests/support/harness.h"
 
 using namespace ramus;

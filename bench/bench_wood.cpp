@@ -14,8 +14,8 @@
 #include "backends/scanner/scanner.h"
 #include "compiler/grow.h"
 #include "formats/point_cloud_io.h"
-#include "infer/reconstruct.h"
-#include "infer/wood/wood_separation.h"
+#include "reconstruct/reconstruct.h"
+#include "reconstruct/wood/wood_separation.h"
 #include "tests/support/harness.h"
 
 using namespace ramus;

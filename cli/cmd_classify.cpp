@@ -15,7 +15,7 @@
 #include "core/little_endian.h"
 #include "core/number_text.h"
 #include "formats/point_cloud_io.h"
-#include "infer/wood/wood_separation.h"
+#include "reconstruct/wood/wood_separation.h"
 
 namespace ramus::cli {
 namespace {

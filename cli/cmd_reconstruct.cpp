@@ -17,9 +17,9 @@
 #include "cli/reconstruct_choice.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
-#include "infer/merge/branch_merge.h"
-#include "infer/merge/merge_angles.h"
-#include "infer/reconstruct.h"
+#include "reconstruct/merge/branch_merge.h"
+#include "reconstruct/merge/merge_angles.h"
+#include "reconstruct/reconstruct.h"
 
 namespace ramus::cli {
 namespace {

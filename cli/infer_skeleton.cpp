@@ -16,7 +16,7 @@
 #include "cli/skeleton_source.h"
 #include "core/atomic_file.h"
 #include "formats/skeleton_json.h"
-#include "infer/merge/branch_merge.h"
+#include "reconstruct/merge/branch_merge.h"
 #include "infer/skeleton/scaffold_grammar.h"
 #include "infer/skeleton/skeleton_grammar.h"
 

@@ -1,6 +1,6 @@
 #include "cli/reconstruct_choice.h"
 
-#include "infer/flood/flood_skeleton.h"
+#include "reconstruct/flood/flood_skeleton.h"
 
 namespace ramus::cli {
 

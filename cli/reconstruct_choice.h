@@ -7,7 +7,7 @@
 
 #include "cli/command.h"
 #include "core/point_cloud.h"
-#include "infer/reconstruct.h"
+#include "reconstruct/reconstruct.h"
 
 namespace ramus::cli {
 

@@ -8,7 +8,7 @@
 #include "cli/grow_args.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
-#include "infer/reconstruct.h"
+#include "reconstruct/reconstruct.h"
 
 namespace ramus::cli {
 

@@ -1,5 +1,5 @@
 # The stages of ramus and the direction of their dependencies (docs/design.md):
-#   core < grammar < compiler < formats, infer < backends < cli
+#   core < grammar < compiler < formats, infer < backends < cli;  core < reconstruct < infer
 # Each stage is one folder and one static library. A stage's sources see the folders of the
 # stages below it and nothing else: the library's include path is a folder of the build tree
 # holding links to exactly those folders (`ramus_stage_includes`), so an include that runs up

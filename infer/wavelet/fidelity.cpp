@@ -14,7 +14,7 @@
 #include "compiler/turtle.h"
 #include "grammar/diagnostic.h"
 #include "grammar/source.h"
-#include "infer/reconstruct/kdtree.h"
+#include "reconstruct/bsg/kdtree.h"
 #include "infer/wavelet/dyad_tree.h"
 #include "infer/wavelet/haar.h"
 #include "infer/wavelet/isolated_points.h"

@@ -7,7 +7,7 @@
 #include <algorithm>
 #include <vector>
 
-#include "infer/reconstruct/kdtree.h"
+#include "reconstruct/bsg/kdtree.h"
 
 namespace ramus::wavelet {
 namespace {

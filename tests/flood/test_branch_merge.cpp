@@ -4,7 +4,7 @@
 #include <cmath>
 
 #include "core/rng.h"
-#include "infer/merge/branch_merge.h"
+#include "reconstruct/merge/branch_merge.h"
 
 using namespace ramus;
 using merge::merge_branches;

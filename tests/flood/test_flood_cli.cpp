@@ -4,7 +4,7 @@
 #include "../cli/cli_runner.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
-#include "infer/merge/merge_angles.h"
+#include "reconstruct/merge/merge_angles.h"
 #include "tests/flood/flood_fixtures.h"
 
 using namespace cli_test;

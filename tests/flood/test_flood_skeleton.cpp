@@ -5,9 +5,9 @@
 
 #include "compiler/grow.h"
 #include "formats/point_cloud_io.h"
-#include "infer/flood/flood_skeleton.h"
-#include "infer/flood/line_fit.h"
-#include "infer/reconstruct/compare.h"
+#include "reconstruct/flood/flood_skeleton.h"
+#include "reconstruct/flood/line_fit.h"
+#include "reconstruct/bsg/compare.h"
 #include "tests/flood/flood_fixtures.h"
 #include "tests/support/harness.h"
 

@@ -29,10 +29,11 @@ const std::map<std::string, std::set<std::string>> kMayUse = {
     {"grammar", {"core"}},
     {"compiler", {"core", "grammar"}},
     {"formats", {"core", "grammar", "compiler"}},
-    {"infer", {"core", "grammar", "compiler"}},
+    {"reconstruct", {"core"}},
+    {"infer", {"core", "grammar", "compiler", "reconstruct"}},
     {"backends", {"core", "grammar", "compiler", "formats"}},
     {"runtime", {"core", "grammar", "compiler", "formats"}},
-    {"cli", {"core", "grammar", "compiler", "formats", "infer", "backends"}},
+    {"cli", {"core", "grammar", "compiler", "formats", "reconstruct", "infer", "backends"}},
 };
 
 bool is_source(const fs::path& p) {

@@ -4,7 +4,7 @@
 #include <limits>
 
 #include "core/rng.h"
-#include "infer/reconstruct.h"
+#include "reconstruct/reconstruct.h"
 
 using namespace ramus;
 

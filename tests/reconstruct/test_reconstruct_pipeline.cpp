@@ -1,8 +1,8 @@
 // reconstruct() end to end on synthetic trees whose skeletons are known.
 #include <catch2/catch.hpp>
 
-#include "infer/reconstruct.h"
-#include "infer/reconstruct/compare.h"
+#include "reconstruct/reconstruct.h"
+#include "reconstruct/bsg/compare.h"
 #include "tests/reconstruct/reconstruct_fixtures.h"
 
 using namespace ramus;

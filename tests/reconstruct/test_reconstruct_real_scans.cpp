@@ -3,7 +3,7 @@
 #include <filesystem>
 
 #include "formats/point_cloud_io.h"
-#include "infer/reconstruct.h"
+#include "reconstruct/reconstruct.h"
 
 using namespace ramus;
 

@@ -3,10 +3,10 @@
 
 #include <cmath>
 
-#include "infer/reconstruct/forest.h"
-#include "infer/reconstruct/graph.h"
-#include "infer/reconstruct/inflate.h"
-#include "infer/reconstruct/refine.h"
+#include "reconstruct/bsg/forest.h"
+#include "reconstruct/bsg/graph.h"
+#include "reconstruct/bsg/inflate.h"
+#include "reconstruct/bsg/refine.h"
 
 using namespace ramus::bsg;
 

@@ -9,8 +9,8 @@
 
 #include "backends/scanner/scanner.h"
 #include "core/skeleton.h"
-#include "infer/reconstruct.h"
-#include "infer/reconstruct/compare.h"
+#include "reconstruct/reconstruct.h"
+#include "reconstruct/bsg/compare.h"
 
 namespace ramus::scanner {
 

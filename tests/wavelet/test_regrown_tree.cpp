@@ -10,7 +10,7 @@
 #include "core/rng.h"
 #include "formats/point_cloud_io.h"
 #include "fractal_cloud.h"
-#include "infer/reconstruct.h"
+#include "reconstruct/reconstruct.h"
 #include "infer/shape/envelope.h"
 #include "infer/shape/tree_shape.h"
 #include "infer/wavelet/infer_grammar.h"

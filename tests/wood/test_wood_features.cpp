@@ -7,10 +7,10 @@
 #include <cmath>
 
 #include "core/rng.h"
-#include "infer/wood/features.h"
-#include "infer/wood/mixture.h"
-#include "infer/wood/otsu.h"
-#include "infer/wood/voxel_subsample.h"
+#include "reconstruct/wood/features.h"
+#include "reconstruct/wood/mixture.h"
+#include "reconstruct/wood/otsu.h"
+#include "reconstruct/wood/voxel_subsample.h"
 
 using namespace ramus;
 using namespace ramus::wood;

@@ -12,8 +12,8 @@
 #include "../skeleton_infer/skeleton_fixtures.h"
 #include "backends/scanner/scanner.h"
 #include "formats/point_cloud_io.h"
-#include "infer/reconstruct.h"
-#include "infer/wood/wood_separation.h"
+#include "reconstruct/reconstruct.h"
+#include "reconstruct/wood/wood_separation.h"
 
 using namespace ramus;
 

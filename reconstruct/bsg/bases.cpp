@@ -1,0 +1,288 @@
+#include "reconstruct/bsg/bases.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <map>
+
+namespace ramus::bsg {
+
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+constexpr double kSlope = 0.35;         // steepest terrain taken as ground: about 20 degrees
+constexpr double kMinTrunkShare = 0.1;  // a further trunk has this share of the strongest's points
+
+// A 2D grid over the xy bounds of the kept points.
+struct Grid2 {
+  double x0 = 0, y0 = 0, cell = 1;
+  int nx = 1, ny = 1;
+  int ix(double x) const { return std::clamp(int((x - x0) / cell), 0, nx - 1); }
+  int iy(double y) const { return std::clamp(int((y - y0) / cell), 0, ny - 1); }
+  int at(const Eigen::Vector3d& p) const { return iy(p.y()) * nx + ix(p.x()); }
+};
+
+Grid2 make_grid(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double cell,
+                double max_cells) {
+  Grid2 g;
+  g.x0 = lo.x();
+  g.y0 = lo.y();
+  // Very wide scans get coarser cells rather than unbounded memory.
+  const double area = std::max(hi.x() - lo.x(), cell) * std::max(hi.y() - lo.y(), cell);
+  g.cell = std::max(cell, std::sqrt(area / max_cells));
+  g.nx = int((hi.x() - lo.x()) / g.cell) + 1;
+  g.ny = int((hi.y() - lo.y()) / g.cell) + 1;
+  return g;
+}
+
+// The lowest point of each cell of `g` (infinity where the cell is empty).
+std::vector<double> lowest_points(const std::vector<Eigen::Vector3d>& pts,
+                                  const std::vector<std::uint8_t>& keep, const Grid2& g) {
+  std::vector<double> low(std::size_t(g.nx) * g.ny, kInf);
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (keep[i]) low[g.at(pts[i])] = std::min(low[g.at(pts[i])], pts[i].z());
+  }
+  return low;
+}
+
+// The ground as a lower envelope: the lowest point of each coarse cell, spread to every other
+// cell with a bounded slope. Where there is no terrain (most tree scans) this is the trunk base
+// seen from around the tree, so crown points far above it are never mistaken for ground.
+std::vector<double> ground_envelope(const std::vector<double>& low, const Grid2& g) {
+  std::vector<std::pair<int, double>> occupied;
+  for (int c = 0; c < int(low.size()); ++c) {
+    if (low[c] < kInf) occupied.emplace_back(c, low[c]);
+  }
+  std::vector<double> ground(low.size(), kInf);
+  for (int c = 0; c < int(low.size()); ++c) {
+    for (auto [o, z] : occupied) {
+      const double dx = (c % g.nx - o % g.nx) * g.cell, dy = (c / g.nx - o / g.nx) * g.cell;
+      ground[c] = std::min(ground[c], z + kSlope * std::sqrt(dx * dx + dy * dy));
+    }
+  }
+  return ground;
+}
+
+// The lowest point of a grid cell, with the cell's centre.
+struct LowPoint {
+  Eigen::Vector2d xy;
+  double z;
+};
+
+std::vector<LowPoint> low_points(const std::vector<double>& lowest, const Grid2& g) {
+  std::vector<LowPoint> out;
+  for (int c = 0; c < int(lowest.size()); ++c) {
+    if (lowest[c] < kInf) {
+      out.push_back(
+          {{g.x0 + (c % g.nx + 0.5) * g.cell, g.y0 + (c / g.nx + 0.5) * g.cell}, lowest[c]});
+    }
+  }
+  return out;
+}
+
+// The ground at `xy` as the rest of the scan predicts it: the envelope of the lowest points of
+// the cells farther than `exclude` from `xy`. A trunk stands on the ground, so its base is not
+// above this prediction; the tip of a hanging or drooping branch is its own cell's lowest point,
+// and only this leave-one-out view shows that it floats above the ground seen elsewhere.
+double predicted_ground(const std::vector<LowPoint>& lows, const Eigen::Vector2d& xy,
+                        double exclude) {
+  double best = kInf;
+  for (const LowPoint& l : lows) {
+    const double d = (l.xy - xy).norm();
+    if (d > exclude) best = std::min(best, l.z + kSlope * d);
+  }
+  return best;
+}
+
+struct Cluster {
+  double sx = 0, sy = 0, zmin = kInf, n = 0;
+  double x0 = kInf, x1 = -kInf, y0 = kInf, y1 = -kInf;
+};
+
+struct Footprint : Cluster {
+  double peak = 0;
+  std::vector<int> cells;
+};
+
+// Points in the slab above the footprint (its cells and their neighbours): a trunk rises
+// through it, a low branch or a fallen twig does not.
+double points_above(const Grid2& g, const Footprint& f, const std::vector<double>& above) {
+  std::vector<int> seen;
+  double sum = 0;
+  for (int c : f.cells) {
+    for (int dy = -1; dy <= 1; ++dy) {
+      for (int dx = -1; dx <= 1; ++dx) {
+        const int x = c % g.nx + dx, y = c / g.nx + dy;
+        if (x < 0 || y < 0 || x >= g.nx || y >= g.ny) continue;
+        seen.push_back(y * g.nx + x);
+      }
+    }
+  }
+  std::sort(seen.begin(), seen.end());
+  seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
+  for (int c : seen) sum += above[c];
+  return sum;
+}
+
+// Connected groups of occupied cells (cells up to two apart are neighbours, which bridges the
+// holes of sparse sampling). A trunk is a compact footprint with a dense peak; a wall is a long
+// one however dense it is.
+std::vector<Footprint> footprints(const Grid2& g, const std::vector<double>& count,
+                                  const std::vector<double>& zmin, double threshold) {
+  std::vector<int> label(count.size(), -1);
+  std::vector<Footprint> out;
+  std::vector<int> stack;
+  for (int s = 0; s < int(count.size()); ++s) {
+    if (label[s] >= 0 || count[s] < threshold) continue;
+    Footprint cl;
+    label[s] = int(out.size());
+    stack.assign(1, s);
+    while (!stack.empty()) {
+      const int c = stack.back();
+      stack.pop_back();
+      const int cx = c % g.nx, cy = c / g.nx;
+      const double x = g.x0 + (cx + 0.5) * g.cell, y = g.y0 + (cy + 0.5) * g.cell;
+      cl.sx += count[c] * x, cl.sy += count[c] * y, cl.n += count[c];
+      cl.zmin = std::min(cl.zmin, zmin[c]);
+      cl.peak = std::max(cl.peak, count[c]);
+      cl.cells.push_back(c);
+      cl.x0 = std::min(cl.x0, x), cl.x1 = std::max(cl.x1, x);
+      cl.y0 = std::min(cl.y0, y), cl.y1 = std::max(cl.y1, y);
+      for (int dy = -2; dy <= 2; ++dy) {
+        for (int dx = -2; dx <= 2; ++dx) {
+          const int nx = cx + dx, ny = cy + dy;
+          if (nx < 0 || ny < 0 || nx >= g.nx || ny >= g.ny) continue;
+          const int n = ny * g.nx + nx;
+          if (label[n] < 0 && count[n] >= threshold) label[n] = label[s], stack.push_back(n);
+        }
+      }
+    }
+    out.push_back(cl);
+  }
+  return out;
+}
+
+}  // namespace
+
+Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std::uint8_t>& keep,
+                 const BaseParams& p) {
+  Bases out;
+  out.terrain.assign(pts.size(), 0);
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant(kInf), hi = -lo;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (keep[i]) lo = lo.cwiseMin(pts[i]), hi = hi.cwiseMax(pts[i]);
+  }
+  if (!(lo.x() <= hi.x())) {
+    out.note = "no points";
+    return out;
+  }
+  const Grid2 coarse = make_grid(lo, hi, std::max(4 * p.cell, (hi.z() - lo.z()) / 10), 2500);
+  const std::vector<double> low = lowest_points(pts, keep, coarse);
+  const std::vector<double> ground = ground_envelope(low, coarse);
+  const Grid2 fine = make_grid(lo, hi, p.cell, 4e6);
+  // Ground may rise by the envelope's slope across one coarse cell.
+  const double band = std::max(p.ground_band, kSlope * coarse.cell);
+  std::vector<double> count(std::size_t(fine.nx) * fine.ny, 0.0), zmin(count.size(), kInf);
+  std::vector<double> above(count.size(), 0.0);    // the next slab up: trunks continue there
+  std::vector<double> lowest(count.size(), kInf);  // lowest point of each fine cell, terrain too
+  std::size_t standing = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (!keep[i]) continue;
+    lowest[fine.at(pts[i])] = std::min(lowest[fine.at(pts[i])], pts[i].z());
+    const double h = pts[i].z() - ground[coarse.at(pts[i])];
+    if (h < band) {
+      out.terrain[i] = p.remove_terrain ? 1 : 0;
+      continue;
+    }
+    ++standing;
+    if (h < band + p.slab) {
+      const int c = fine.at(pts[i]);
+      count[c] += 1;
+      zmin[c] = std::min(zmin[c], pts[i].z());
+    } else if (h < band + 2 * p.slab) {
+      above[fine.at(pts[i])] += 1;
+    }
+  }
+  if (standing == 0) {
+    out.note = "every point lies in the terrain layer: no tree stands above the ground";
+    return out;
+  }
+  const double peak = *std::max_element(count.begin(), count.end());
+  // A trunk is vertical, so its cells collect far more points than those of low branches.
+  const double threshold = std::max(2.0, 0.1 * peak);
+  std::vector<Footprint> found = footprints(fine, count, zmin, threshold);
+  // Strongest first; a weaker cluster close to a stronger one is a low branch of its tree.
+  std::stable_sort(found.begin(), found.end(),
+                   [](const auto& a, const auto& b) { return a.n > b.n; });
+  std::size_t too_wide = 0;
+  const std::vector<LowPoint> lows = low_points(lowest, fine);
+  double strongest = 0;
+  for (const Footprint& cl : found) {
+    const double width = std::max(cl.x1 - cl.x0, cl.y1 - cl.y0) + fine.cell;
+    if (cl.n < 5) continue;
+    if (out.roots.empty()) strongest = cl.n;
+    // The strongest cluster is always a candidate; others must rise like a trunk.
+    if (!out.roots.empty() && points_above(fine, cl, above) < 0.5 * cl.n) continue;
+    // A trunk's footprint is round (a half ring from one side); a piece of wall is a line.
+    const double thickness = std::min(cl.x1 - cl.x0, cl.y1 - cl.y0) + fine.cell;
+    if (width > p.max_trunk_width || (width > 4 * fine.cell && thickness < 0.3 * width)) {
+      ++too_wide;
+      continue;
+    }
+    const Eigen::Vector3d base(cl.sx / cl.n, cl.sy / cl.n, cl.zmin);
+    bool near_stronger = false;
+    for (const auto& r : out.roots) {
+      near_stronger |= (r - base).head<2>().norm() < p.min_separation;
+    }
+    if (near_stronger) continue;
+    // Others must also stand on the ground that the rest of the scan shows (4.1: trunks rise
+    // from the terrain; hanging and drooping branches end in the air).
+    double foot = kInf;
+    for (int c : cl.cells) foot = std::min(foot, lowest[c]);
+    const double reach = 0.5 * width + fine.cell;
+    const double predicted = predicted_ground(lows, base.head<2>(), reach + fine.cell);
+    if (!out.roots.empty() && foot > predicted + p.ground_band) continue;
+    // ... and be a trunk of comparable weight: the slab under a crown also collects bundles of
+    // hanging twigs, which are vertical and reach the ground too but hold a few per cent of the
+    // points of a trunk (measured 3-4% on the weeping and conifer examples).
+    if (!out.roots.empty() && cl.n < kMinTrunkShare * strongest) continue;
+    out.roots.push_back(base);
+    out.reach.push_back(reach);
+  }
+  if (out.roots.empty() && too_wide == 0) {
+    // Sparse scans (airborne LiDAR) may hold only a handful of trunk points: fall back to the
+    // strongest group of any standing points near the ground, when it is narrow enough.
+    found = footprints(fine, count, zmin, 1.0);
+    std::stable_sort(found.begin(), found.end(),
+                     [](const auto& a, const auto& b) { return a.n > b.n; });
+    if (!found.empty()) {
+      const Footprint& cl = found.front();
+      const double width = std::max(cl.x1 - cl.x0, cl.y1 - cl.y0) + fine.cell;
+      if (width <= p.max_trunk_width) {
+        out.roots.emplace_back(cl.sx / cl.n, cl.sy / cl.n, cl.zmin);
+        out.reach.push_back(0.5 * width + fine.cell);
+      } else {
+        ++too_wide;
+      }
+    }
+  }
+  // Terrain removal must not eat the trunk: the ground band is low-density terrain only away
+  // from the trunks (4.1), so the points under each base's footprint are kept, and the root
+  // moves down to the lowest of them.
+  for (std::size_t r = 0; r < out.roots.size(); ++r) {
+    const double reach2 = out.reach[r] * out.reach[r];
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      if (!keep[i] || (pts[i] - out.roots[r]).head<2>().squaredNorm() > reach2) continue;
+      out.terrain[i] = 0;
+      out.roots[r].z() = std::min(out.roots[r].z(), pts[i].z());
+    }
+  }
+  if (out.roots.empty()) {
+    out.note = too_wide ? "the dense clusters near the ground are too wide to be trunks "
+                          "(walls or hedges?): no tree base found"
+                        : "no dense cluster of points near the ground: no tree base found";
+  }
+  return out;
+}
+
+}  // namespace ramus::bsg

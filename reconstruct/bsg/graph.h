@@ -1,0 +1,35 @@
+// Building the neighbourhood graph of 4.1: voxel merging, k nearest neighbours weighted by
+// squared distance, and bridging of gaps between components.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "reconstruct/bsg/bsg.h"
+
+namespace ramus::bsg {
+
+// Merges the points (only those with keep[i] != 0) on a grid of edge `voxel`: one vertex per
+// occupied voxel at the centroid of its points. point_vertex[i] is the vertex of point i (kNone
+// for points not kept). Vertices are ordered by voxel key, so the result is deterministic.
+Graph voxelize(const std::vector<Eigen::Vector3d>& points, const std::vector<std::uint8_t>& keep,
+               double voxel, std::vector<std::uint32_t>& point_vertex);
+
+// Links every vertex to its k nearest neighbours (symmetrically), weight = squared distance.
+void link_nearest(Graph& graph, int k);
+
+// Moves every vertex to the mean of itself and its graph neighbours, `steps` times. On samples of
+// a branch's bark this draws them towards the branch axis, so that Dijkstra's tree follows the
+// branch with one chain instead of several parallel ones along its surface.
+void contract(Graph& graph, int steps);
+
+// Connected component of every vertex (labels 0..n-1 in order of first vertex).
+std::vector<std::uint32_t> components(const Graph& graph, std::uint32_t* count = nullptr);
+
+// Bridges gaps left by occlusion: repeatedly joins each component not reachable from a root to
+// the reachable part by its closest pair of vertices, smallest gaps first, as long as the gap is
+// at most max_gap. Returns the number of bridges added.
+std::size_t bridge_gaps(Graph& graph, const std::vector<std::uint32_t>& roots, double max_gap);
+
+}  // namespace ramus::bsg

@@ -1,0 +1,340 @@
+// Section 4.3 of Livny et al. 2010.
+#include "reconstruct/bsg/inflate.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "reconstruct/bsg/kdtree.h"
+#include "reconstruct/bsg/refine.h"
+
+namespace ramus::bsg {
+
+namespace {
+
+// A generalized cylinder: a segment with linearly varying radius, closed by the balls at its
+// ends so that the cylinders of a chain join without gaps.
+struct Cylinder {
+  Eigen::Vector3d a, b;
+  double ra, rb;
+  bool contains(const Eigen::Vector3d& p) const {
+    const Eigen::Vector3d ab = b - a;
+    const double l2 = ab.squaredNorm();
+    const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+    const double r = ra + t * (rb - ra);
+    return (p - (a + t * ab)).squaredNorm() <= r * r;
+  }
+};
+
+// Fraction of the volume of `c` (its straight part) inside any of `others`, estimated on a
+// fixed, volume-uniform pattern of samples so that the result is deterministic.
+double covered_fraction(const Cylinder& c, const std::vector<Cylinder>& others) {
+  if (others.empty()) return 0.0;
+  const Eigen::Vector3d axis = c.b - c.a;
+  const double len = axis.norm();
+  if (len <= 0) return 1.0;
+  const Eigen::Vector3d d = axis / len;
+  const Eigen::Vector3d helper =
+      std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d e1 = d.cross(helper).normalized(), e2 = d.cross(e1);
+  static constexpr std::array<double, 4> kT = {0.125, 0.375, 0.625, 0.875};
+  static constexpr std::array<double, 2> kR = {0.5, 0.866};  // sqrt(1/4), sqrt(3/4): equal areas
+  int inside = 0, total = 0;
+  for (double t : kT) {
+    const Eigen::Vector3d centre = c.a + t * axis;
+    const double r = c.ra + t * (c.rb - c.ra);
+    auto test = [&](const Eigen::Vector3d& p) {
+      ++total;
+      for (const Cylinder& o : others) {
+        if (o.contains(p)) return void(++inside);
+      }
+    };
+    test(centre);
+    for (double rr : kR) {
+      for (int k = 0; k < 6; ++k) {
+        const double ang = (k + 0.5 * (rr > 0.6)) * (M_PI / 3);
+        test(centre + r * rr * (std::cos(ang) * e1 + std::sin(ang) * e2));
+      }
+    }
+  }
+  return double(inside) / double(total);
+}
+
+// A mutable view of the BSG while edges are collapsed.
+struct Editable {
+  Bsg& b;
+  std::vector<std::vector<std::uint32_t>> ch;
+  std::vector<std::uint8_t> alive;
+
+  // The cylinder of edge (u, v), v the child, has v's radius: the edge is v's segment, and a
+  // thin twig leaving a thick trunk must not inherit the trunk's radius at its start.
+  // Radii below the voxel size are raised to it: the merged points cannot resolve finer
+  // detail, and zig-zags of one voxel across a thin branch must cluster away.
+  Cylinder cyl(std::uint32_t u, std::uint32_t v) const {
+    const double r = std::max(b.radius[v], min_radius);
+    return {b.pos[u], b.pos[v], r, r};
+  }
+  double min_radius = 0;
+  double tolerance = 0;  // a degree-2 collapse may move the branch by this much at least
+  // Collapses edge (u, a), a a child of u, into u at the weighted midpoint (4.3).
+  void merge(std::uint32_t u, std::uint32_t a, bool keep_a_position = false) {
+    // The midpoint is weighted by the points each vertex stands for, so a merged vertex is the
+    // centroid of its cluster. (The paper weights by c; on samples that lie on the bark this
+    // lets a vertex walk along a heavy branch, one collapse at a time.)
+    const double mu = b.mass[u], ma = b.mass[a];
+    if (keep_a_position) {
+      b.pos[u] = b.pos[a];
+    } else if (b.parent[u] != kNone) {
+      // The root stays where the base was found.
+      b.pos[u] = (mu * b.pos[u] + ma * b.pos[a]) / std::max(mu + ma, 1e-300);
+    }
+    b.mass[u] = mu + ma;
+    auto& cu_list = ch[u];
+    cu_list.erase(std::find(cu_list.begin(), cu_list.end(), a));
+    for (std::uint32_t g : ch[a]) b.parent[g] = u, cu_list.push_back(g);
+    ch[a].clear();
+    alive[a] = 0;
+    b.vertex[u] = kNone;
+  }
+};
+
+// Edge removal: a child edge of u covered by the other cylinders meeting at u.
+std::size_t remove_covered(Editable& e, std::uint32_t u, double overlap) {
+  std::size_t merged = 0;
+  for (bool again = true; again;) {
+    again = false;
+    // The heaviest child continues the branch through u; only the others can be negligible.
+    std::uint32_t main = kNone;
+    for (std::uint32_t a : e.ch[u]) {
+      if (main == kNone || e.b.weight[a] > e.b.weight[main]) main = a;
+    }
+    for (std::uint32_t a : e.ch[u]) {
+      if (a == main && e.b.parent[u] != kNone) continue;
+      // Only short edges cluster: a long edge alongside a sibling is a branch of its own, and
+      // merging it would drag u far from where its points are.
+      const double reach = 2 * std::max(e.b.radius[u], e.min_radius);
+      if ((e.b.pos[a] - e.b.pos[u]).squaredNorm() > reach * reach) continue;
+      std::vector<Cylinder> others;
+      if (e.b.parent[u] != kNone) others.push_back(e.cyl(e.b.parent[u], u));
+      for (std::uint32_t s : e.ch[u]) {
+        if (s != a) others.push_back(e.cyl(u, s));
+      }
+      if (covered_fraction(e.cyl(u, a), others) > overlap) {
+        e.merge(u, a);
+        ++merged;
+        again = true;
+        break;
+      }
+    }
+  }
+  return merged;
+}
+
+double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                              const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double l2 = ab.squaredNorm();
+  const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+  return (p - a - t * ab).norm();
+}
+
+// Whether replacing v and w by one vertex at `merged` keeps the branch where its samples are:
+// both old positions stay within `tolerance` of the new polyline u -> merged -> w's children.
+// Without this, a run of collapses along a curved branch (a weeping whip, an arching limb)
+// replaces the curve by its chord, which leaves the points it stands for.
+bool collapse_keeps_shape(const Editable& e, std::uint32_t u, std::uint32_t v, std::uint32_t w,
+                          const Eigen::Vector3d& merged, double tolerance) {
+  for (const Eigen::Vector3d& old : {e.b.pos[v], e.b.pos[w]}) {
+    double d = point_segment_distance(old, e.b.pos[u], merged);
+    for (std::uint32_t x : e.ch[w])
+      d = std::min(d, point_segment_distance(old, merged, e.b.pos[x]));
+    if (d > tolerance) return false;
+  }
+  return true;
+}
+
+// Degree-2 collapse: v with parent u and one child w; (v, w) goes when the extension of (u, v)
+// beyond v covers more than half of it. Tips are kept so that branches keep their length.
+std::size_t collapse_degree2(Editable& e, std::uint32_t v, double overlap) {
+  std::size_t merged = 0;
+  while (e.b.parent[v] != kNone && e.ch[v].size() == 1 && !e.ch[e.ch[v][0]].empty()) {
+    const std::uint32_t u = e.b.parent[v], w = e.ch[v][0];
+    const Eigen::Vector3d ext = e.b.pos[v] + (e.b.pos[v] - e.b.pos[u]);
+    const double rv = std::max(e.b.radius[v], e.min_radius);
+    const Cylinder virt{e.b.pos[v], ext, rv, rv};
+    if (covered_fraction(e.cyl(v, w), {virt}) <= overlap) break;
+    // A branching w keeps its place (v simply disappears from a straight run); otherwise
+    // branch points would creep down the trunk one collapse at a time.
+    const bool keep_w = e.ch[w].size() != 1;
+    const double mv = e.b.mass[v], mw = e.b.mass[w];
+    const Eigen::Vector3d target =
+        keep_w ? e.b.pos[w]
+               : Eigen::Vector3d((mv * e.b.pos[v] + mw * e.b.pos[w]) / std::max(mv + mw, 1e-300));
+    if (!collapse_keeps_shape(e, u, v, w, target, std::max(e.b.radius[v], e.tolerance))) break;
+    e.merge(v, w, keep_w);
+    ++merged;
+  }
+  return merged;
+}
+
+// Re-indexes the surviving vertices in parent-first order.
+void compact(Editable& e) {
+  Bsg out;
+  std::vector<std::uint32_t> stack{0}, local(e.b.size(), kNone);
+  while (!stack.empty()) {
+    const std::uint32_t v = stack.back();
+    stack.pop_back();
+    local[v] = std::uint32_t(out.pos.size());
+    out.pos.push_back(e.b.pos[v]);
+    out.parent.push_back(e.b.parent[v] == kNone ? kNone : local[e.b.parent[v]]);
+    out.vertex.push_back(e.b.vertex[v]);
+    out.weight.push_back(e.b.weight[v]);
+    out.radius.push_back(e.b.radius[v]);
+    out.mass.push_back(e.b.mass[v]);
+    for (auto it = e.ch[v].rbegin(); it != e.ch[v].rend(); ++it) stack.push_back(*it);
+  }
+  e.b = std::move(out);
+}
+
+}  // namespace
+
+double mean_sample_distance(const Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
+                            const std::vector<std::uint32_t>& counts, double edge_sample) {
+  if (bsg.size() < 2 || samples.empty()) return 0.0;
+  // Points along every edge, each remembering its edge; the nearest few give the nearest edge.
+  std::vector<Eigen::Vector3d> along;
+  std::vector<std::uint32_t> edge_of;
+  for (std::uint32_t v = 1; v < bsg.size(); ++v) {
+    const Eigen::Vector3d a = bsg.pos[bsg.parent[v]], d = bsg.pos[v] - a;
+    const int steps = std::clamp(int(std::ceil(d.norm() / edge_sample)), 1, 1000);
+    for (int s = 0; s <= steps; ++s) {
+      along.push_back(a + d * (double(s) / steps));
+      edge_of.push_back(v);
+    }
+  }
+  PointIndex index(along);
+  double sum = 0, weight = 0;
+  std::array<std::uint32_t, 4> ids;
+  std::array<double, 4> d2;
+  for (std::size_t i = 0; i < samples.size(); ++i) {
+    const std::size_t n = index.knn(samples[i], ids.size(), ids.data(), d2.data());
+    double best = std::numeric_limits<double>::infinity();
+    for (std::size_t j = 0; j < n; ++j) {
+      const std::uint32_t v = edge_of[ids[j]];
+      const Eigen::Vector3d a = bsg.pos[bsg.parent[v]], ab = bsg.pos[v] - a;
+      const double l2 = ab.squaredNorm();
+      const double t = l2 > 0 ? std::clamp((samples[i] - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+      best = std::min(best, (samples[i] - a - t * ab).norm());
+    }
+    sum += counts[i] * best;
+    weight += counts[i];
+  }
+  return weight > 0 ? sum / weight : 0.0;
+}
+
+// Eq. 6 asks r_parent = k r_child on every edge with k = (c_parent / c_child)^(1/exponent) (the
+// pipe-model reading of Eq. 5: r^2.5 proportional to the subtree weight). On a tree these n - 1
+// homogeneous equations have a one-dimensional solution space, r = s * r0 with r0 propagated
+// from the root; Eq. 7 (sum c_v r_v = d_avg sum c_v) then fixes s. Both terms reach zero, so
+// this closed form is the exact minimizer of Eq. 6 + Eq. 7.
+void assign_radii(Bsg& bsg, double d_avg, double exponent, double root_radius) {
+  const std::size_t n = bsg.size();
+  bsg.radius.assign(n, 1.0);
+  for (std::size_t v = 1; v < n; ++v) {
+    const std::uint32_t p = bsg.parent[v];
+    const double ratio = bsg.weight[v] / std::max(bsg.weight[p], 1e-300);
+    bsg.radius[v] = bsg.radius[p] * std::pow(std::min(ratio, 1.0), 1.0 / exponent);
+  }
+  double cr = 0, c = 0;
+  for (std::size_t v = 0; v < n; ++v) cr += bsg.weight[v] * bsg.radius[v], c += bsg.weight[v];
+  const double s = root_radius > 0 ? root_radius : (cr > 0 ? d_avg * c / cr : 0.0);
+  for (double& r : bsg.radius) r *= s;
+}
+
+double trunk_radius(const std::vector<Eigen::Vector3d>& samples, const Eigen::Vector3d& base,
+                    double slab, double max_width) {
+  // Minimizes sum (x^2 + y^2 + D x + E y + F)^2: linear in (D, E, F).
+  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (const Eigen::Vector3d& p : samples) {
+    const double dx = p.x() - base.x(), dy = p.y() - base.y();
+    if (p.z() < base.z() || p.z() > base.z() + slab ||
+        dx * dx + dy * dy > 0.25 * max_width * max_width) {
+      continue;
+    }
+    const Eigen::Vector3d row(dx, dy, 1.0);
+    m += row * row.transpose();
+    rhs -= row * (dx * dx + dy * dy);
+    ++n;
+  }
+  if (n < 6) return 0.0;
+  const Eigen::Vector3d sol = m.ldlt().solve(rhs);
+  const double r2 = 0.25 * (sol.x() * sol.x() + sol.y() * sol.y()) - sol.z();
+  const double r = r2 > 0 ? std::sqrt(r2) : 0.0;
+  return std::isfinite(r) && r < 0.5 * max_width ? r : 0.0;
+}
+
+std::size_t collapse_overlaps(Bsg& bsg, double overlap, double min_radius, double tolerance) {
+  if (bsg.size() < 2) return 0;
+  Editable e{bsg, children_of(bsg.parent), std::vector<std::uint8_t>(bsg.size(), 1)};
+  e.min_radius = min_radius;
+  e.tolerance = tolerance;
+  std::size_t merged = 0;
+  for (std::uint32_t u = 0; u < bsg.size(); ++u) {
+    if (!e.alive[u]) continue;
+    merged += remove_covered(e, u, overlap);
+    merged += collapse_degree2(e, u, overlap);
+  }
+  if (merged) compact(e);
+  return merged;
+}
+
+std::size_t prune_twigs(Bsg& bsg, double min_length) {
+  if (bsg.size() < 2 || min_length <= 0) return 0;
+  Editable e{bsg, children_of(bsg.parent), std::vector<std::uint8_t>(bsg.size(), 1)};
+  std::size_t removed = 0;
+  for (std::uint32_t leaf = std::uint32_t(bsg.size()); leaf-- > 1;) {
+    if (!e.alive[leaf] || !e.ch[leaf].empty()) continue;
+    // Walk down to the branching vertex the twig leaves from.
+    double len = 0;
+    std::uint32_t v = leaf;
+    while (bsg.parent[v] != kNone && e.ch[bsg.parent[v]].size() == 1 && len < min_length) {
+      len += (bsg.pos[v] - bsg.pos[bsg.parent[v]]).norm();
+      v = bsg.parent[v];
+    }
+    const std::uint32_t fork = bsg.parent[v];
+    if (fork == kNone || len + (bsg.pos[v] - bsg.pos[fork]).norm() >= min_length) continue;
+    auto& sib = e.ch[fork];
+    sib.erase(std::find(sib.begin(), sib.end(), v));
+    for (std::uint32_t w = leaf;; w = bsg.parent[w]) {
+      e.alive[w] = 0;
+      ++removed;
+      if (w == v) break;
+    }
+  }
+  if (removed) compact(e);
+  return removed;
+}
+
+int inflate(Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
+            const std::vector<std::uint32_t>& counts, const InflateParams& params) {
+  int rounds = 0;
+  // Collapsing moves vertices towards the branch axes, which raises d_avg, which widens the
+  // cylinders; the loop runs to the fixed point where nothing more collapses (4.3).
+  for (; rounds < 40; ++rounds) {
+    importance_weights(bsg, params.own_weight);
+    const double d_avg = params.root_radius > 0
+                             ? 0.0
+                             : mean_sample_distance(bsg, samples, counts, params.edge_sample);
+    assign_radii(bsg, d_avg, params.exponent, params.root_radius);
+    if (collapse_overlaps(bsg, params.overlap, params.min_radius, params.tolerance) == 0) break;
+  }
+  prune_twigs(bsg, params.min_twig);
+  importance_weights(bsg, params.own_weight);
+  assign_radii(bsg, mean_sample_distance(bsg, samples, counts, params.edge_sample), params.exponent,
+               params.root_radius);
+  return rounds;
+}
+
+}  // namespace ramus::bsg
