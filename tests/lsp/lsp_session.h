@@ -1,4 +1,4 @@
-// An editor's side of a session with `ramus lsp` (RAMUS_EXE): the server runs as a child
+// An editor's side of a session with `ramus lsp` (RAMUS_EXE in the tests, bench/bench_lsp.cpp): the server runs as a child
 // process on two pipes; the test writes framed JSON-RPC messages and reads what comes back,
 // with a time limit so that a server that stops answering fails the test instead of hanging it.
 #pragma once
@@ -22,7 +22,11 @@ using nlohmann::json;
 
 class LspSession {
  public:
-  LspSession() {
+#ifdef RAMUS_EXE
+  LspSession() : LspSession(RAMUS_EXE) {}
+#endif
+  // Runs `EXE lsp`.
+  explicit LspSession(const std::string& exe) {
     int to_child[2], from_child[2];
     if (pipe(to_child) != 0 || pipe(from_child) != 0) throw std::runtime_error("pipe failed");
     pid_ = fork();
@@ -32,7 +36,7 @@ class LspSession {
       dup2(from_child[1], STDOUT_FILENO);
       close(to_child[1]);
       close(from_child[0]);
-      execl(RAMUS_EXE, RAMUS_EXE, "lsp", static_cast<char*>(nullptr));
+      execl(exe.c_str(), exe.c_str(), "lsp", static_cast<char*>(nullptr));
       _exit(127);
     }
     close(to_child[0]);
