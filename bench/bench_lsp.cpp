@@ -48,7 +48,8 @@ std::vector<std::pair<int, int>> word_starts(const std::string& text) {
     }
     bool word = std::isalnum(static_cast<unsigned char>(c)) || c == '_';
     bool prev_word = std::isalnum(static_cast<unsigned char>(prev)) || prev == '_';
-    if ((word && !prev_word) || std::string_view("+-&^\\/|$[]!'~%").find(c) != std::string_view::npos)
+    if ((word && !prev_word) ||
+        std::string_view("+-&^\\/|$[]!'~%").find(c) != std::string_view::npos)
       out.push_back({line, col});
     prev = c;
     ++col;
@@ -76,8 +77,8 @@ int main(int argc, char** argv) {
   s.notify("initialized");
   std::map<std::string, std::vector<double>> times;
   std::map<std::string, std::pair<double, std::string>> worst;  // method -> (ms, file)
-  std::map<std::string, int> errors;  // error responses: none expected
-  std::size_t items = 0;               // completion items, to show the answers are real
+  std::map<std::string, int> errors;                            // error responses: none expected
+  std::size_t items = 0;  // completion items, to show the answers are real
   int id = 1;
   auto record = [&](const std::string& method, double ms, const fs::path& f) {
     times[method].push_back(ms);
@@ -88,7 +89,8 @@ int main(int argc, char** argv) {
     s.request(id, "textDocument/" + method, std::move(params));
     json r = s.response(id++);
     record(method, ms_since(t0), f);
-    if (r.contains("error") && errors[method]++ == 0) std::fprintf(stderr, "%s: %s\n", method.c_str(), r.dump().c_str());
+    if (r.contains("error") && errors[method]++ == 0)
+      std::fprintf(stderr, "%s: %s\n", method.c_str(), r.dump().c_str());
     if (method == "completion") items += r["result"].size();
   };
   for (const fs::path& f : files) {
@@ -96,11 +98,14 @@ int main(int argc, char** argv) {
     const std::string uri = ramus::lsp::uri_of_path(fs::absolute(f).lexically_normal().string());
     const json doc = {{"uri", uri}};
     auto t0 = Clock::now();
-    s.notify("textDocument/didOpen", {{"textDocument", {{"uri", uri}, {"languageId", "ramus"}, {"version", 1}, {"text", text}}}});
+    s.notify("textDocument/didOpen",
+             {{"textDocument",
+               {{"uri", uri}, {"languageId", "ramus"}, {"version", 1}, {"text", text}}}});
     s.diagnostics(uri);
     record("didOpen -> diagnostics", ms_since(t0), f);
     t0 = Clock::now();
-    s.notify("textDocument/didChange", {{"textDocument", {{"uri", uri}, {"version", 2}}}, {"contentChanges", {{{"text", text + "\n"}}}}});
+    s.notify("textDocument/didChange", {{"textDocument", {{"uri", uri}, {"version", 2}}},
+                                        {"contentChanges", {{{"text", text + "\n"}}}}});
     s.diagnostics(uri);
     record("didChange -> diagnostics", ms_since(t0), f);
     int lines = 0;
@@ -113,7 +118,8 @@ int main(int argc, char** argv) {
         lines = line + 1;
       }
     }
-    timed("formatting", {{"textDocument", doc}, {"options", {{"tabSize", 2}, {"insertSpaces", true}}}}, f);
+    timed("formatting",
+          {{"textDocument", doc}, {"options", {{"tabSize", 2}, {"insertSpaces", true}}}}, f);
     timed("documentSymbol", {{"textDocument", doc}}, f);
     s.notify("textDocument/didClose", {{"textDocument", doc}});
     s.diagnostics(uri);
@@ -125,8 +131,8 @@ int main(int argc, char** argv) {
 
   std::printf("ramus lsp over stdio, %zu grammars under %s (ms per round trip)\n", files.size(),
               examples.string().c_str());
-  std::printf("%-26s %7s %7s %8s %8s %8s  %s\n", "method", "count", "errors", "median", "p99", "max",
-              "slowest file");
+  std::printf("%-26s %7s %7s %8s %8s %8s  %s\n", "method", "count", "errors", "median", "p99",
+              "max", "slowest file");
   for (auto& [method, v] : times) {
     std::sort(v.begin(), v.end());
     auto q = [&](double p) { return v[std::min(v.size() - 1, std::size_t(p * double(v.size())))]; };

@@ -12,8 +12,8 @@
 namespace ramus::cli {
 
 void add_lsp(CLI::App& app, const GlobalOptions& global, std::function<int()>& run) {
-  CLI::App* sub = app.add_subcommand(
-      "lsp", "run the language server (LSP 3.17 over stdin/stdout) for editors");
+  CLI::App* sub =
+      app.add_subcommand("lsp", "run the language server (LSP 3.17 over stdin/stdout) for editors");
   sub->callback([&run] { run = [] { return lsp::run_server(STDIN_FILENO, STDOUT_FILENO); }; });
 }
 

@@ -91,14 +91,17 @@ std::string Analysis::comment_of(const SourceSpan& decl) const {
     std::uint32_t end_line = sources_.line_col(decl.file, c->span.end - 1).line;
     if (end_line + 1 != want) break;
     LineCol start = sources_.line_col(decl.file, c->span.begin);
-    std::string_view before = sources_.line_text(decl.file, c->span.begin).substr(0, start.column - 1);
+    std::string_view before =
+        sources_.line_text(decl.file, c->span.begin).substr(0, start.column - 1);
     if (before.find_first_not_of(" \t") != std::string_view::npos) break;  // trails other code
     above.push_back(&*c);
     want = start.line;
   }
   auto strip = [](std::string_view c) {
-    if (c.substr(0, 2) == "//") c.remove_prefix(2);
-    else if (c.substr(0, 2) == "/*") c = c.substr(2, c.size() >= 4 ? c.size() - 4 : 0);
+    if (c.substr(0, 2) == "//")
+      c.remove_prefix(2);
+    else if (c.substr(0, 2) == "/*")
+      c = c.substr(2, c.size() >= 4 ? c.size() - 4 : 0);
     while (!c.empty() && c.front() == ' ') c.remove_prefix(1);
     return std::string(c);
   };

@@ -27,17 +27,16 @@ struct Definition {
   Kind kind;
   std::string name;
   SourceSpan name_span;
-  SourceSpan decl_span;                        // the whole declaration
-  const ast::Expr* value = nullptr;            // Const, Param
-  const ast::ModulePattern* pattern = nullptr; // Module: `A(l, w)` as declared
+  SourceSpan decl_span;                         // the whole declaration
+  const ast::Expr* value = nullptr;             // Const, Param
+  const ast::ModulePattern* pattern = nullptr;  // Module: `A(l, w)` as declared
 };
 
 class Analysis {
  public:
   // `uri` names the document; `path` (empty for a document without a file) is the base for
   // relative imports.
-  Analysis(std::string uri, const std::string& path, std::string text,
-           PositionEncoding encoding);
+  Analysis(std::string uri, const std::string& path, std::string text, PositionEncoding encoding);
   Analysis(const Analysis&) = delete;
   Analysis& operator=(const Analysis&) = delete;
 

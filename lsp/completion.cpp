@@ -14,7 +14,8 @@ std::vector<CompletionItem> completion_at(const Analysis& a, const Position& pos
   std::vector<CompletionItem> items;
   auto word_items = [&](std::span<const Word> words, CompletionKind kind) {
     for (const Word& w : words) {
-      items.push_back({std::string(w.name), kind, std::string(w.signature), std::string(w.meaning)});
+      items.push_back(
+          {std::string(w.name), kind, std::string(w.signature), std::string(w.meaning)});
     }
   };
   if (const ast::File* root = a.root()) {
@@ -22,7 +23,8 @@ std::vector<CompletionItem> completion_at(const Analysis& a, const Position& pos
       for (const auto* seq : {&p->left_context, &p->right_context}) {
         for (const ast::ModulePattern& m : *seq) {
           for (const ast::Identifier& id : m.params)
-            items.push_back({id.name, CompletionKind::Variable, "parameter of " + pattern_text(m), ""});
+            items.push_back(
+                {id.name, CompletionKind::Variable, "parameter of " + pattern_text(m), ""});
         }
       }
       for (const ast::Identifier& id : p->predecessor.params) {
@@ -33,7 +35,8 @@ std::vector<CompletionItem> completion_at(const Analysis& a, const Position& pos
   }
   for (const Definition& d : a.definitions()) {
     if (d.kind != K::Const && d.kind != K::Param) continue;
-    std::string detail = (d.kind == K::Param ? "param " : "const ") + d.name + " = " + format_expr(*d.value);
+    std::string detail =
+        (d.kind == K::Param ? "param " : "const ") + d.name + " = " + format_expr(*d.value);
     if (std::optional<double> v = a.value_of(d.name)) {
       std::string text = shortest_text(*v);
       if (text != format_expr(*d.value)) detail += "  (" + text + ")";

@@ -17,15 +17,15 @@ struct CursorTarget {
     Module,    // a module in an axiom, successor, pattern, symbol set or module declaration
     Function,  // the callee of a call
     Import,
-    Setting,   // the key of an lsystem setting
-    Piece,     // a piece or rim name in a pieces block
-    Block,     // the name of an lsystem, pieces or voxels block
+    Setting,  // the key of an lsystem setting
+    Piece,    // a piece or rim name in a pieces block
+    Block,    // the name of an lsystem, pieces or voxels block
   };
   Kind kind = Kind::None;
   std::string name;
-  SourceSpan span;                                  // the name's own span
-  const ast::Production* production = nullptr;      // the production around a Name or Module
-  const ast::Import* import = nullptr;              // Import
+  SourceSpan span;                              // the name's own span
+  const ast::Production* production = nullptr;  // the production around a Name or Module
+  const ast::Import* import = nullptr;          // Import
 };
 
 // The target at `offset`; when nothing starts there, the name that ends there (a cursor just

@@ -13,9 +13,12 @@ namespace fs = std::filesystem;
 
 DiagnosticSeverity severity_of(Severity s) {
   switch (s) {
-    case Severity::Error: return DiagnosticSeverity::Error;
-    case Severity::Warning: return DiagnosticSeverity::Warning;
-    case Severity::Note: return DiagnosticSeverity::Information;
+    case Severity::Error:
+      return DiagnosticSeverity::Error;
+    case Severity::Warning:
+      return DiagnosticSeverity::Warning;
+    case Severity::Note:
+      return DiagnosticSeverity::Information;
   }
   return DiagnosticSeverity::Error;
 }
@@ -36,7 +39,8 @@ std::optional<SourceSpan> import_reaching(const Analysis& a, std::uint32_t id) {
     if (!ids.count(id)) continue;
     // The import of the root that loaded file `direct`: resolved again, it names the same file.
     std::error_code ec;
-    const fs::path loaded = fs::weakly_canonical(a.sources().name(program.files[direct].file_id), ec);
+    const fs::path loaded =
+        fs::weakly_canonical(a.sources().name(program.files[direct].file_id), ec);
     for (const ast::Decl& d : root.decls) {
       const auto* im = std::get_if<ast::Import>(&d);
       if (im == nullptr) continue;

@@ -59,18 +59,21 @@ std::vector<DocumentSymbol> document_symbols(const Analysis& a) {
       }
     } else if (const auto* m = std::get_if<ast::ModuleDecl>(&d)) {
       for (const ast::ModulePattern& p : m->modules) {
-        out.push_back(symbol(a, pattern_text(p), "module", SymbolKind::Struct, m->span, name_of(p)));
+        out.push_back(
+            symbol(a, pattern_text(p), "module", SymbolKind::Struct, m->span, name_of(p)));
       }
     } else if (const auto* l = std::get_if<ast::LSystem>(&d)) {
-      DocumentSymbol s = symbol(a, l->name.name, "lsystem", SymbolKind::Namespace, l->span, l->name.span);
+      DocumentSymbol s =
+          symbol(a, l->name.name, "lsystem", SymbolKind::Namespace, l->span, l->name.span);
       s.children = lsystem_items(a, *l);
       out.push_back(std::move(s));
     } else if (const auto* p = std::get_if<ast::Pieces>(&d)) {
-      DocumentSymbol s = symbol(a, p->name.name, "pieces", SymbolKind::Namespace, p->span, p->name.span);
+      DocumentSymbol s =
+          symbol(a, p->name.name, "pieces", SymbolKind::Namespace, p->span, p->name.span);
       for (const ast::PiecesItem& item : p->items) {
         if (const auto* piece = std::get_if<ast::PieceDecl>(&item)) {
-          s.children.push_back(symbol(a, piece->name.name, piece->ctor.kind.name,
-                                      SymbolKind::Class, piece->span, piece->name.span));
+          s.children.push_back(symbol(a, piece->name.name, piece->ctor.kind.name, SymbolKind::Class,
+                                      piece->span, piece->name.span));
         } else if (const auto* rim = std::get_if<ast::RimDecl>(&item)) {
           s.children.push_back(
               symbol(a, rim->name.name, "rim", SymbolKind::Property, rim->span, rim->name.span));
@@ -78,7 +81,8 @@ std::vector<DocumentSymbol> document_symbols(const Analysis& a) {
       }
       out.push_back(std::move(s));
     } else if (const auto* v = std::get_if<ast::Voxels>(&d)) {
-      out.push_back(symbol(a, v->name.name, "voxels", SymbolKind::Namespace, v->span, v->name.span));
+      out.push_back(
+          symbol(a, v->name.name, "voxels", SymbolKind::Namespace, v->span, v->name.span));
     }
   }
   return out;

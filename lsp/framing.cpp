@@ -107,7 +107,8 @@ Frame FrameReader::next() {
       if (!read_exact(n, skipped)) return {};
       left -= n;
     }
-    return {Frame::Kind::BadHeader, {},
+    return {Frame::Kind::BadHeader,
+            {},
             "message of " + std::to_string(*length) + " bytes is over the limit"};
   }
   Frame f{Frame::Kind::Message, {}, {}};

@@ -72,7 +72,9 @@ std::string module_hover(const Analysis& a, const std::string& name) {
     }
   }
   if (!d && !turtle) {
-    auto declared = [&](std::string_view n) { return a.find(std::string(n), {Definition::Kind::Module}) != nullptr; };
+    auto declared = [&](std::string_view n) {
+      return a.find(std::string(n), {Definition::Kind::Module}) != nullptr;
+    };
     std::vector<std::string> parts = split_module_name(name, declared);
     if (parts.size() > 1) {
       std::string list;
@@ -104,7 +106,8 @@ std::optional<Hover> hover_at(const Analysis& a, const Position& position) {
           break;
         }
       }
-      if (const Definition* d = a.find(t.name, {Definition::Kind::Const, Definition::Kind::Param})) {
+      if (const Definition* d =
+              a.find(t.name, {Definition::Kind::Const, Definition::Kind::Param})) {
         md = constant_hover(a, *d);
       } else if (double v; find_named_constant(t.name, v)) {
         md = code(t.name) + "\n\nnamed constant: `" + shortest_text(v) + "`";
@@ -129,17 +132,16 @@ std::optional<Hover> hover_at(const Analysis& a, const Position& position) {
       break;
     }
     case CursorTarget::Kind::Import: {
-      std::optional<std::string> path =
-          resolve_import(*t.import, a.sources().name(a.root_id()));
+      std::optional<std::string> path = resolve_import(*t.import, a.sources().name(a.root_id()));
       md = code("import " + std::string(t.import->is_file ? "\"" + t.name + "\"" : t.name));
       paragraph(md, path ? "reads `" + *path + "`" : "not found");
       break;
     }
     case CursorTarget::Kind::Piece:
     case CursorTarget::Kind::Block: {
-      const Definition* d = a.find(t.name, {Definition::Kind::Piece, Definition::Kind::Rim,
-                                            Definition::Kind::LSystem, Definition::Kind::Pieces,
-                                            Definition::Kind::Voxels});
+      const Definition* d =
+          a.find(t.name, {Definition::Kind::Piece, Definition::Kind::Rim, Definition::Kind::LSystem,
+                          Definition::Kind::Pieces, Definition::Kind::Voxels});
       if (d == nullptr) return std::nullopt;
       std::string_view first = a.sources().line_text(d->decl_span.file, d->decl_span.begin);
       md = code(std::string(first));

@@ -53,8 +53,16 @@ struct Hover {
 
 // CompletionItemKind of the specification (the values used here).
 enum class CompletionKind {
-  Function = 3, Variable = 6, Class = 7, Module = 9, Property = 10, Keyword = 14,
-  Snippet = 15, File = 17, Constant = 21, Operator = 24,
+  Function = 3,
+  Variable = 6,
+  Class = 7,
+  Module = 9,
+  Property = 10,
+  Keyword = 14,
+  Snippet = 15,
+  File = 17,
+  Constant = 21,
+  Operator = 24,
 };
 
 struct CompletionItem {
@@ -66,8 +74,15 @@ struct CompletionItem {
 
 // SymbolKind of the specification (the values used here).
 enum class SymbolKind {
-  File = 1, Module = 2, Namespace = 3, Class = 5, Property = 7, Function = 12, Variable = 13,
-  Constant = 14, Struct = 23,
+  File = 1,
+  Module = 2,
+  Namespace = 3,
+  Class = 5,
+  Property = 7,
+  Function = 12,
+  Variable = 13,
+  Constant = 14,
+  Struct = 23,
 };
 
 struct DocumentSymbol {

@@ -32,7 +32,8 @@ struct RpcError {
 // Params are read through these, so a missing member or one of the wrong type is InvalidParams
 // naming the member.
 const json& member(const json& object, const char* key) {
-  if (!object.is_object()) throw RpcError{kInvalidParams, std::string("expected an object holding '") + key + "'"};
+  if (!object.is_object())
+    throw RpcError{kInvalidParams, std::string("expected an object holding '") + key + "'"};
   auto it = object.find(key);
   if (it == object.end()) throw RpcError{kInvalidParams, std::string("missing '") + key + "'"};
   return *it;
@@ -184,13 +185,15 @@ struct Server::Impl {
   }
 
   json initialize(const json& params) {
-    if (state != State::Uninitialized) throw RpcError{kInvalidRequest, "initialize was already sent"};
+    if (state != State::Uninitialized)
+      throw RpcError{kInvalidRequest, "initialize was already sent"};
     if (!params.is_object()) throw RpcError{kInvalidParams, "initialize takes an object"};
     // LSP 3.17: the client lists the encodings it supports; UTF-16 is the mandatory default.
     encoding = PositionEncoding::Utf16;
     if (auto caps = params.find("capabilities"); caps != params.end() && caps->is_object()) {
       if (auto general = caps->find("general"); general != caps->end() && general->is_object()) {
-        if (auto encs = general->find("positionEncodings"); encs != general->end() && encs->is_array()) {
+        if (auto encs = general->find("positionEncodings");
+            encs != general->end() && encs->is_array()) {
           for (const json& e : *encs) {
             if (e == "utf-8") encoding = PositionEncoding::Utf8;
           }
@@ -240,13 +243,15 @@ struct Server::Impl {
         std::string uri = string_member(doc, "uri");
         OpenDocument& d = documents[uri];
         d.text = string_member(doc, "text");
-        d.version = member(doc, "version").is_number_integer() ? doc["version"].get<std::int64_t>() : 0;
+        d.version =
+            member(doc, "version").is_number_integer() ? doc["version"].get<std::int64_t>() : 0;
         analyse(uri, d);
       } else if (method == "textDocument/didChange") {
         changed(params);
       } else if (method == "textDocument/didClose") {
         std::string uri = string_member(member(params, "textDocument"), "uri");
-        if (documents.erase(uri)) notify("textDocument/publishDiagnostics", {{"uri", uri}, {"diagnostics", json::array()}});
+        if (documents.erase(uri))
+          notify("textDocument/publishDiagnostics", {{"uri", uri}, {"diagnostics", json::array()}});
       }
       // Other notifications (initialized, didSave, $/cancelRequest, ...) need nothing.
     } catch (const std::exception&) {
@@ -277,14 +282,16 @@ struct Server::Impl {
       }
     }
     it->second.text = std::move(text);
-    if (auto v = doc.find("version"); v != doc.end() && v->is_number_integer()) it->second.version = v->get<std::int64_t>();
+    if (auto v = doc.find("version"); v != doc.end() && v->is_number_integer())
+      it->second.version = v->get<std::int64_t>();
     analyse(uri, it->second);
   }
 
   void analyse(const std::string& uri, OpenDocument& d) {
     d.analysis = std::make_unique<Analysis>(uri, path_of_uri(uri).value_or(""), d.text, encoding);
-    notify("textDocument/publishDiagnostics",
-           {{"uri", uri}, {"version", d.version}, {"diagnostics", document_diagnostics(*d.analysis)}});
+    notify(
+        "textDocument/publishDiagnostics",
+        {{"uri", uri}, {"version", d.version}, {"diagnostics", document_diagnostics(*d.analysis)}});
   }
 };
 

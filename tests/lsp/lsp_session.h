@@ -1,6 +1,7 @@
-// An editor's side of a session with `ramus lsp` (RAMUS_EXE in the tests, bench/bench_lsp.cpp): the server runs as a child
-// process on two pipes; the test writes framed JSON-RPC messages and reads what comes back,
-// with a time limit so that a server that stops answering fails the test instead of hanging it.
+// An editor's side of a session with `ramus lsp` (RAMUS_EXE in the tests, bench/bench_lsp.cpp): the
+// server runs as a child process on two pipes; the test writes framed JSON-RPC messages and reads
+// what comes back, with a time limit so that a server that stops answering fails the test instead
+// of hanging it.
 #pragma once
 
 #include <fcntl.h>
@@ -9,9 +10,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <nlohmann/json.hpp>
-
 #include <chrono>
+#include <nlohmann/json.hpp>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -87,7 +87,8 @@ class LspSession {
     }
     const std::string key = "Content-Length: ";
     std::size_t at = header.find(key);
-    if (at == std::string::npos) throw std::runtime_error("response without Content-Length: " + header);
+    if (at == std::string::npos)
+      throw std::runtime_error("response without Content-Length: " + header);
     std::size_t length = std::stoul(header.substr(at + key.size()));
     std::string body(length, '\0');
     if (length > 0 && !read_bytes(body.data(), length, seconds)) return std::nullopt;

@@ -2,11 +2,9 @@
 // files, and the TextMate grammar highlights every keyword the parser knows (the kw("...")
 // words of grammar/detail/rules_def.h), every setting and every builtin function.
 #include <catch2/catch.hpp>
-
-#include <nlohmann/json.hpp>
-
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -55,7 +53,8 @@ void collect(const json& node, std::vector<Rule>& out) {
 }
 
 // The scope of the rule that highlights `word` at the start of `sample` as a whole ("" if none).
-std::string scope_of(const std::vector<Rule>& rules, const std::string& word, const std::string& sample) {
+std::string scope_of(const std::vector<Rule>& rules, const std::string& word,
+                     const std::string& sample) {
   for (const Rule& r : rules) {
     std::smatch m;
     if (std::regex_search(sample, m, r.re, std::regex_constants::match_continuous) &&
@@ -70,7 +69,8 @@ std::set<std::string> parser_keywords() {
   const std::string rules = slurp(fs::path(RAMUS_SOURCE_DIR) / "grammar/detail/rules_def.h");
   std::set<std::string> out;
   std::regex kw(R"re(kw\("([A-Za-z_]+)"\))re");
-  for (auto it = std::sregex_iterator(rules.begin(), rules.end(), kw); it != std::sregex_iterator(); ++it)
+  for (auto it = std::sregex_iterator(rules.begin(), rules.end(), kw); it != std::sregex_iterator();
+       ++it)
     out.insert((*it)[1]);
   return out;
 }
@@ -104,15 +104,18 @@ TEST_CASE("editors: the TextMate grammar highlights the parser's keywords, setti
     INFO(w);
     std::string scope = scope_of(rules, w, w + " x;");
     if (w == "true" || w == "false") scope = scope_of(rules, w, w + ";");
-    CHECK((scope.find("keyword") != std::string::npos || scope.find("constant.language") != std::string::npos));
+    CHECK((scope.find("keyword") != std::string::npos ||
+           scope.find("constant.language") != std::string::npos));
   }
   for (const ramus::lsp::Word& s : ramus::lsp::lsystem_settings()) {
     INFO(s.name);
-    CHECK(scope_of(rules, std::string(s.name), std::string(s.name) + " 2;").find("setting") != std::string::npos);
+    CHECK(scope_of(rules, std::string(s.name), std::string(s.name) + " 2;").find("setting") !=
+          std::string::npos);
   }
   for (const ramus::BuiltinInfo& b : ramus::kBuiltins) {
     INFO(b.name);
-    CHECK(scope_of(rules, std::string(b.name), std::string(b.name) + "(x)").find("support.function") != std::string::npos);
+    CHECK(scope_of(rules, std::string(b.name), std::string(b.name) + "(x)")
+              .find("support.function") != std::string::npos);
   }
   // Not everything is a keyword: a module name is not.
   CHECK(scope_of(rules, "Apex", "Apex(1)").find("keyword") == std::string::npos);

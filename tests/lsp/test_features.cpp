@@ -2,7 +2,6 @@
 // feature headers): what hover says about each kind of name, where definition goes, what
 // completion offers, the outline, and diagnostics that come from an imported file.
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <fstream>
 
@@ -65,7 +64,8 @@ TEST_CASE("features: hover on each kind of name") {
   CHECK_FALSE(hover_at(a, at("25.7")).has_value());  // a number: nothing to say
 }
 
-TEST_CASE("features: definition of parameters, modules without a declaration, nothing for builtins") {
+TEST_CASE(
+    "features: definition of parameters, modules without a declaration, nothing for builtins") {
   Analysis a("untitled:plant", "", kText, PositionEncoding::Utf16);
   std::vector<Location> n = definition_at(a, at("n;"));
   REQUIRE(n.size() == 1);

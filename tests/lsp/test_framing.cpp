@@ -1,8 +1,7 @@
 // The base protocol's framing (lsp/framing.h): Content-Length headers, several messages in one
 // read or one message over many, header errors and resynchronization, truncated input.
-#include <catch2/catch.hpp>
-
 #include <algorithm>
+#include <catch2/catch.hpp>
 #include <cstring>
 
 #include "lsp/framing.h"
@@ -13,7 +12,8 @@ using ramus::lsp::Frame;
 using ramus::lsp::FrameReader;
 
 // A reader over `bytes` that hands out at most `chunk` bytes per read.
-FrameReader reader_over(const std::string& bytes, std::size_t chunk, std::size_t max_body = 1 << 20) {
+FrameReader reader_over(const std::string& bytes, std::size_t chunk,
+                        std::size_t max_body = 1 << 20) {
   auto pos = std::make_shared<std::size_t>(0);
   return FrameReader(
       [bytes, chunk, pos](char* data, std::size_t size) {
@@ -46,7 +46,8 @@ TEST_CASE("framing: messages whole and in pieces") {
 
 TEST_CASE("framing: bad headers are reported and reading goes on") {
   FrameReader r = reader_over(
-      "Content-Length: x1\r\n\r\nContent-Type: a\r\n\r\nno colon\r\n\r\ncontent-length:  3 \n\n[1]", 7);
+      "Content-Length: x1\r\n\r\nContent-Type: a\r\n\r\nno colon\r\n\r\ncontent-length:  3 \n\n[1]",
+      7);
   Frame a = r.next();
   CHECK(a.kind == Frame::Kind::BadHeader);
   CHECK(a.error.find("not a number") != std::string::npos);
@@ -60,7 +61,8 @@ TEST_CASE("framing: bad headers are reported and reading goes on") {
 }
 
 TEST_CASE("framing: a body over the limit is skipped, a truncated one ends the stream") {
-  FrameReader r = reader_over("Content-Length: 10\r\n\r\n0123456789" + ramus::lsp::frame_message("{}"), 4, 8);
+  FrameReader r =
+      reader_over("Content-Length: 10\r\n\r\n0123456789" + ramus::lsp::frame_message("{}"), 4, 8);
   Frame big = r.next();
   CHECK(big.kind == Frame::Kind::BadHeader);
   CHECK(big.error.find("over the limit") != std::string::npos);

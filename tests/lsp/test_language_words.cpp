@@ -2,7 +2,6 @@
 // setting listed is one the checker accepts, every builtin of grammar/builtins.h has a
 // signature with its arity, every turtle symbol the checker knows has a meaning.
 #include <catch2/catch.hpp>
-
 #include <string>
 
 #include "grammar/builtins.h"
@@ -17,7 +16,8 @@ TEST_CASE("language words: settings are accepted by the checker, unknown ones ar
     const std::string values = setting == "tropism" ? "0, 0, -1" : "2";
     SourceManager sm;
     DiagnosticSink sink;
-    Program p = load_program_text("t.ramus", "lsystem t {\n  " + setting + " " + values + ";\n  axiom F;\n}\n", sm, sink);
+    Program p = load_program_text(
+        "t.ramus", "lsystem t {\n  " + setting + " " + values + ";\n  axiom F;\n}\n", sm, sink);
     check_program(p, sm, sink);
     return sink.all().empty();
   };

@@ -35,10 +35,13 @@ void still_answers(LspSession& s, int id) {
 
 TEST_CASE("lsp malformed: requests before initialize get ServerNotInitialized") {
   LspSession s;
-  s.request(7, "textDocument/hover", {{"textDocument", {{"uri", "file:///x.ramus"}}}, {"position", {{"line", 0}, {"character", 0}}}});
+  s.request(7, "textDocument/hover",
+            {{"textDocument", {{"uri", "file:///x.ramus"}}},
+             {"position", {{"line", 0}, {"character", 0}}}});
   json r = s.response(7);
   CHECK(error_code(r) == -32002);
-  s.notify("textDocument/didOpen", {{"textDocument", {{"uri", "file:///x.ramus"}, {"text", "x"}, {"version", 1}}}});
+  s.notify("textDocument/didOpen",
+           {{"textDocument", {{"uri", "file:///x.ramus"}, {"text", "x"}, {"version", 1}}}});
   initialize(s);  // the notification before initialize was dropped, not answered
   s.request(2, "initialize", {{"capabilities", json::object()}});
   CHECK(error_code(s.response(2)) == -32600);  // initialize only once
@@ -80,18 +83,27 @@ TEST_CASE("lsp malformed: bad JSON, bad messages, unknown methods, wrong params"
   CHECK(error_code(m) == -32601);
 
   // Params of the wrong types.
-  s.request(8, "textDocument/hover", {{"textDocument", {{"uri", 17}}}, {"position", {{"line", 0}, {"character", 0}}}});
+  s.request(8, "textDocument/hover",
+            {{"textDocument", {{"uri", 17}}}, {"position", {{"line", 0}, {"character", 0}}}});
   CHECK(error_code(s.response(8)) == -32602);
-  s.notify("textDocument/didOpen", {{"textDocument", {{"uri", "untitled:a"}, {"languageId", "ramus"}, {"version", 1}, {"text", "lsystem t { axiom F; }"}}}});
+  s.notify("textDocument/didOpen", {{"textDocument",
+                                     {{"uri", "untitled:a"},
+                                      {"languageId", "ramus"},
+                                      {"version", 1},
+                                      {"text", "lsystem t { axiom F; }"}}}});
   s.diagnostics("untitled:a");
-  s.request(9, "textDocument/hover", {{"textDocument", {{"uri", "untitled:a"}}}, {"position", {{"line", -1}, {"character", "x"}}}});
+  s.request(9, "textDocument/hover",
+            {{"textDocument", {{"uri", "untitled:a"}}},
+             {"position", {{"line", -1}, {"character", "x"}}}});
   CHECK(error_code(s.response(9)) == -32602);
   s.request(10, "textDocument/definition", {{"textDocument", {{"uri", "untitled:a"}}}});
   CHECK(error_code(s.response(10)) == -32602);
   s.send({{"jsonrpc", "2.0"}, {"id", 11}, {"method", "textDocument/completion"}, {"params", 3}});
   CHECK(error_code(s.response(11)) == -32600);
   // A position far past the end is clamped, not an error.
-  s.request(12, "textDocument/hover", {{"textDocument", {{"uri", "untitled:a"}}}, {"position", {{"line", 4000}, {"character", 99999}}}});
+  s.request(12, "textDocument/hover",
+            {{"textDocument", {{"uri", "untitled:a"}}},
+             {"position", {{"line", 4000}, {"character", 99999}}}});
   CHECK(s.response(12)["result"].is_null());
   // Malformed notifications change nothing and get no answer.
   s.notify("textDocument/didChange", {{"textDocument", 5}, {"contentChanges", "x"}});

@@ -3,7 +3,6 @@
 // hover on a param (its value), definition (the `param` line), completion (the params and
 // modules in scope), formatting (equal to `ramus fmt`), shutdown and exit.
 #include <catch2/catch.hpp>
-
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -53,7 +52,8 @@ json position(int line, int character) { return {{"line", line}, {"character", c
 json doc(const std::string& uri) { return {{"uri", uri}}; }
 
 void initialize(LspSession& s) {
-  s.request(1, "initialize", {{"processId", nullptr}, {"rootUri", nullptr}, {"capabilities", json::object()}});
+  s.request(1, "initialize",
+            {{"processId", nullptr}, {"rootUri", nullptr}, {"capabilities", json::object()}});
   json r = s.response(1);
   REQUIRE(r.contains("result"));
   CHECK(r["result"]["capabilities"]["positionEncoding"] == "utf-16");
@@ -81,10 +81,12 @@ TEST_CASE("lsp session: diagnostics, hover, definition, completion, formatting, 
   LspSession s;
   initialize(s);
   s.notify("textDocument/didOpen",
-           {{"textDocument", {{"uri", uri}, {"languageId", "ramus"}, {"version", 1}, {"text", kBroken}}}});
+           {{"textDocument",
+             {{"uri", uri}, {"languageId", "ramus"}, {"version", 1}, {"text", kBroken}}}});
   json diags = s.diagnostics(uri);
   // The syntax error (and, since the production did not parse, a warning that `r` is unused).
-  auto syntax = std::find_if(diags.begin(), diags.end(), [](const json& d) { return d["code"] == "E0003"; });
+  auto syntax =
+      std::find_if(diags.begin(), diags.end(), [](const json& d) { return d["code"] == "E0003"; });
   REQUIRE(syntax != diags.end());
   CHECK((*syntax)["severity"] == 1);
   CHECK((*syntax)["source"] == "ramus");
@@ -97,8 +99,10 @@ TEST_CASE("lsp session: diagnostics, hover, definition, completion, formatting, 
 
   // Hover on `angle_deg` in the successor (line 8): its declaration, value and comment.
   const int line = 8;
-  const int col = int(std::string(kBroken).substr(std::string(kBroken).find("  Apex(l) ->")).find("angle_deg"));
-  s.request(2, "textDocument/hover", {{"textDocument", doc(uri)}, {"position", position(line, col + 2)}});
+  const int col =
+      int(std::string(kBroken).substr(std::string(kBroken).find("  Apex(l) ->")).find("angle_deg"));
+  s.request(2, "textDocument/hover",
+            {{"textDocument", doc(uri)}, {"position", position(line, col + 2)}});
   json hover = s.response(2)["result"];
   REQUIRE(hover.is_object());
   const std::string text = hover["contents"]["value"];
@@ -109,33 +113,39 @@ TEST_CASE("lsp session: diagnostics, hover, definition, completion, formatting, 
 
   // Hover on the const `r`: its folded value.
   const int r_col = int(std::string("  Apex(l) -> F(l)[+(angle_deg)Apex(l * ").size());
-  s.request(3, "textDocument/hover", {{"textDocument", doc(uri)}, {"position", position(line, r_col)}});
+  s.request(3, "textDocument/hover",
+            {{"textDocument", doc(uri)}, {"position", position(line, r_col)}});
   const std::string r_text = s.response(3)["result"]["contents"]["value"];
   CHECK(r_text.find("const r = 0.5 * 1.5") != std::string::npos);
   CHECK(r_text.find("value: `0.75`") != std::string::npos);
 
   // Definition of `angle_deg`: the `param` line (1), at the name.
-  s.request(4, "textDocument/definition", {{"textDocument", doc(uri)}, {"position", position(line, col)}});
+  s.request(4, "textDocument/definition",
+            {{"textDocument", doc(uri)}, {"position", position(line, col)}});
   json def = s.response(4)["result"];
   REQUIRE(def.size() == 1);
   CHECK(def[0]["uri"] == uri);
   CHECK(def[0]["range"]["start"] == position(1, 6));
   // Definition of the module Apex: its `module` declaration (line 3).
-  s.request(5, "textDocument/definition", {{"textDocument", doc(uri)}, {"position", position(line, 3)}});
+  s.request(5, "textDocument/definition",
+            {{"textDocument", doc(uri)}, {"position", position(line, 3)}});
   json mdef = s.response(5)["result"];
   REQUIRE(mdef.size() == 1);
   CHECK(mdef[0]["range"]["start"] == position(3, 7));
 
   // Completion inside the production: its formal parameter, the param, the const, the module.
-  s.request(6, "textDocument/completion", {{"textDocument", doc(uri)}, {"position", position(line, col)}});
+  s.request(6, "textDocument/completion",
+            {{"textDocument", doc(uri)}, {"position", position(line, col)}});
   std::vector<std::string> items = labels(s.response(6)["result"]);
-  for (const char* want : {"l", "angle_deg", "r", "Apex", "sin", "uniform", "F", "+", "derive", "axiom"}) {
+  for (const char* want :
+       {"l", "angle_deg", "r", "Apex", "sin", "uniform", "F", "+", "derive", "axiom"}) {
     INFO(want);
     CHECK(has(items, want));
   }
 
   // Formatting: the edit turns the text into what `ramus fmt` writes.
-  const std::string messy = "param  angle_deg=30;\nlsystem tree { axiom F;\n  F -> F[+(angle_deg)F]F; }\n";
+  const std::string messy =
+      "param  angle_deg=30;\nlsystem tree { axiom F;\n  F -> F[+(angle_deg)F]F; }\n";
   s.notify("textDocument/didChange", {{"textDocument", {{"uri", uri}, {"version", 3}}},
                                       {"contentChanges", {{{"text", messy}}}}});
   s.request(7, "textDocument/formatting",
@@ -146,7 +156,8 @@ TEST_CASE("lsp session: diagnostics, hover, definition, completion, formatting, 
   CHECK(edits[0]["range"]["end"] == position(3, 0));
   const fs::path copy = scratch("messy.ramus");
   std::ofstream(copy) << messy;
-  REQUIRE(std::system(("'" + std::string(RAMUS_EXE) + "' fmt '" + copy.string() + "' 2>/dev/null").c_str()) == 0);
+  REQUIRE(std::system(("'" + std::string(RAMUS_EXE) + "' fmt '" + copy.string() + "' 2>/dev/null")
+                          .c_str()) == 0);
   CHECK(edits[0]["newText"] == slurp(copy));
 
   // Document symbols: the param and the lsystem with its production.
@@ -170,8 +181,9 @@ TEST_CASE("lsp session: an imported param, its file and related notes") {
   const std::string text = slurp(example);
   LspSession s;
   initialize(s);
-  s.notify("textDocument/didOpen",
-           {{"textDocument", {{"uri", uri}, {"languageId", "ramus"}, {"version", 1}, {"text", text}}}});
+  s.notify(
+      "textDocument/didOpen",
+      {{"textDocument", {{"uri", uri}, {"languageId", "ramus"}, {"version", 1}, {"text", text}}}});
   CHECK(s.diagnostics(uri).empty());
   // `trunk_width` in the axiom is a param of stdlib/trees/broadleaf.ramus.
   std::istringstream lines(text);
@@ -183,14 +195,18 @@ TEST_CASE("lsp session: an imported param, its file and related notes") {
     }
   }
   REQUIRE(col > 0);
-  s.request(2, "textDocument/definition", {{"textDocument", doc(uri)}, {"position", position(line, col)}});
+  s.request(2, "textDocument/definition",
+            {{"textDocument", doc(uri)}, {"position", position(line, col)}});
   json def = s.response(2)["result"];
   REQUIRE(def.size() == 1);
   CHECK(def[0]["uri"].get<std::string>().find("stdlib/trees/broadleaf.ramus") != std::string::npos);
-  s.request(3, "textDocument/hover", {{"textDocument", doc(uri)}, {"position", position(line, col)}});
-  CHECK(s.response(3)["result"]["contents"]["value"].get<std::string>().find("param trunk_width = 0.5") != std::string::npos);
+  s.request(3, "textDocument/hover",
+            {{"textDocument", doc(uri)}, {"position", position(line, col)}});
+  CHECK(s.response(3)["result"]["contents"]["value"].get<std::string>().find(
+            "param trunk_width = 0.5") != std::string::npos);
   // `import abop;` goes to the stdlib file.
-  s.request(4, "textDocument/definition", {{"textDocument", doc(uri)}, {"position", position(2, 8)}});
+  s.request(4, "textDocument/definition",
+            {{"textDocument", doc(uri)}, {"position", position(2, 8)}});
   json file_def = s.response(4)["result"];
   REQUIRE(file_def.size() == 1);
   CHECK(file_def[0]["uri"].get<std::string>().find("stdlib/abop.ramus") != std::string::npos);
@@ -198,7 +214,8 @@ TEST_CASE("lsp session: an imported param, its file and related notes") {
   // A duplicate definition: the note at the first one becomes relatedInformation.
   s.notify("textDocument/didChange",
            {{"textDocument", {{"uri", uri}, {"version", 2}}},
-            {"contentChanges", {{{"text", "const a = 1;\nconst a = 2;\nlsystem t {\n  axiom F(a);\n}\n"}}}}});
+            {"contentChanges",
+             {{{"text", "const a = 1;\nconst a = 2;\nlsystem t {\n  axiom F(a);\n}\n"}}}}});
   json diags = s.diagnostics(uri);
   REQUIRE(diags.size() == 1);
   CHECK(diags[0]["code"] == "E0103");
@@ -221,9 +238,12 @@ TEST_CASE("lsp session: utf-8 positions when the client offers them") {
   s.notify("initialized");
   // "é" is two bytes: in UTF-8 the name after it starts two columns later than in UTF-16.
   const std::string text = "/* é */ param p = 2;\nlsystem t {\n  axiom F(p);\n}\n";
-  s.notify("textDocument/didOpen", {{"textDocument", {{"uri", "untitled:a"}, {"languageId", "ramus"}, {"version", 1}, {"text", text}}}});
+  s.notify("textDocument/didOpen",
+           {{"textDocument",
+             {{"uri", "untitled:a"}, {"languageId", "ramus"}, {"version", 1}, {"text", text}}}});
   s.diagnostics("untitled:a");
-  s.request(2, "textDocument/definition", {{"textDocument", doc("untitled:a")}, {"position", position(2, 10)}});
+  s.request(2, "textDocument/definition",
+            {{"textDocument", doc("untitled:a")}, {"position", position(2, 10)}});
   json def = s.response(2)["result"];
   REQUIRE(def.size() == 1);
   CHECK(def[0]["range"]["start"] == position(0, 15));

@@ -11,7 +11,9 @@ using ramus::lsp::PositionEncoding;
 
 TEST_CASE("position: UTF-16 counts a 4-byte character as two units, others as one") {
   // "aé€😀b": a (1 byte), é (2), € (3), 😀 (4), b (1)
-  const std::string text = "x\na\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80" "b\n";
+  const std::string text =
+      "x\na\xC3\xA9\xE2\x82\xAC\xF0\x9F\x98\x80"
+      "b\n";
   LineIndex u16(text, PositionEncoding::Utf16);
   CHECK(u16.position(2) == Position{1, 0});   // a
   CHECK(u16.position(3) == Position{1, 1});   // é
@@ -20,8 +22,8 @@ TEST_CASE("position: UTF-16 counts a 4-byte character as two units, others as on
   CHECK(u16.position(12) == Position{1, 5});  // b: after a surrogate pair
   CHECK(u16.position(10) == Position{1, 3});  // inside 😀: its start
   for (std::uint32_t off : {2u, 3u, 5u, 8u, 12u, 13u}) CHECK(u16.offset(u16.position(off)) == off);
-  CHECK(u16.offset({1, 4}) == 8);    // between the surrogates: the character's start
-  CHECK(u16.offset({1, 99}) == 13);  // past the line's end: the end of the line
+  CHECK(u16.offset({1, 4}) == 8);            // between the surrogates: the character's start
+  CHECK(u16.offset({1, 99}) == 13);          // past the line's end: the end of the line
   CHECK(u16.offset({9, 0}) == text.size());  // past the last line: the end of the text
 
   LineIndex u8(text, PositionEncoding::Utf8);
