@@ -57,6 +57,28 @@ Position position_member(const json& object, const char* key) {
   return {uint_member(p, "line"), uint_member(p, "character")};
 }
 
+// True when arrays and objects in `text` nest deeper than `limit`. Checked before parsing: the
+// JSON library copies and destroys values recursively, so hostile nesting (a million `[`) would
+// exhaust the stack; no LSP message nests more than a few dozen levels.
+bool nested_deeper_than(std::string_view text, int limit) {
+  int depth = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++depth > limit) return true;
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return false;
+}
+
 struct OpenDocument {
   std::string text;
   std::int64_t version = 0;
@@ -66,6 +88,7 @@ struct OpenDocument {
 }  // namespace
 
 struct Server::Impl {
+  static constexpr int kMaxNesting = 256;
   enum class State { Uninitialized, Running, ShutDown, Exited };
 
   Send send;
@@ -89,6 +112,11 @@ struct Server::Impl {
   }
 
   void handle(std::string_view text) {
+    if (nested_deeper_than(text, kMaxNesting)) {
+      respond_error(nullptr, kParseError,
+                    "JSON nested deeper than " + std::to_string(kMaxNesting) + " levels");
+      return;
+    }
     json message;
     try {
       message = json::parse(text);
@@ -219,11 +247,16 @@ struct Server::Impl {
     return it->second;
   }
 
-  const Analysis& analysis(const json& params) { return *document(params).analysis; }
+  const Analysis& analysis(const json& params) {
+    OpenDocument& d = document(params);
+    if (!d.analysis) throw RpcError{kRequestFailed, "the document could not be analysed"};
+    return *d.analysis;
+  }
 
   json formatting(const json& params) {
+    std::string uri = string_member(member(params, "textDocument"), "uri");
     OpenDocument& doc = document(params);
-    std::string name = path_of_uri(doc.analysis->uri()).value_or(doc.analysis->uri());
+    std::string name = path_of_uri(uri).value_or(uri);
     auto result = format_document(name, doc.text, encoding);
     if (const auto* failure = std::get_if<FormatFailure>(&result)) {
       throw RpcError{kRequestFailed, failure->message};
@@ -288,6 +321,7 @@ struct Server::Impl {
   }
 
   void analyse(const std::string& uri, OpenDocument& d) {
+    d.analysis.reset();  // a failure below leaves no stale analysis behind
     d.analysis = std::make_unique<Analysis>(uri, path_of_uri(uri).value_or(""), d.text, encoding);
     notify(
         "textDocument/publishDiagnostics",

@@ -72,6 +72,13 @@ TEST_CASE("lsp malformed: bad JSON, bad messages, unknown methods, wrong params"
   s.send_body("{\"jsonrpc\": \"2.0\", \"id\": 5, \"method\": 42}");
   CHECK(error_code(next(s)) == -32600);
 
+  // Nesting that would exhaust the stack of a recursive JSON library is refused before parsing.
+  s.send_body(R"({"jsonrpc":"2.0","id":40,"method":"x","params":)" + std::string(1000000, '[') +
+              std::string(1000000, ']') + "}");
+  m = next(s);
+  CHECK(error_code(m) == -32700);
+  CHECK(m["error"]["message"].get<std::string>().find("nested deeper") != std::string::npos);
+
   s.request(6, "textDocument/frobnicate");
   m = s.response(6);
   CHECK(error_code(m) == -32601);
