@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <filesystem>
 #include <map>
 #include <optional>
 
@@ -66,8 +67,10 @@ bool nested_deeper_than(std::string_view text, int limit) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     char c = text[i];
     if (in_string) {
-      if (c == '\\') ++i;
-      else if (c == '"') in_string = false;
+      if (c == '\\')
+        ++i;
+      else if (c == '"')
+        in_string = false;
     } else if (c == '"') {
       in_string = true;
     } else if (c == '[' || c == '{') {
@@ -229,15 +232,16 @@ struct Server::Impl {
       }
     }
     state = State::Running;
-    return {{"capabilities",
-             {{"positionEncoding", encoding_name(encoding)},
-              {"textDocumentSync", {{"openClose", true}, {"change", 1}}},  // 1: full text
-              {"hoverProvider", true},
-              {"definitionProvider", true},
-              {"completionProvider", json::object()},
-              {"documentFormattingProvider", true},
-              {"documentSymbolProvider", true}}},
-            {"serverInfo", {{"name", "ramus"}}}};
+    return {
+        {"capabilities",
+         {{"positionEncoding", encoding_name(encoding)},
+          {"textDocumentSync", {{"openClose", true}, {"change", 1}, {"save", true}}},  // 1: full
+          {"hoverProvider", true},
+          {"definitionProvider", true},
+          {"completionProvider", json::object()},
+          {"documentFormattingProvider", true},
+          {"documentSymbolProvider", true}}},
+        {"serverInfo", {{"name", "ramus"}}}};
   }
 
   OpenDocument& document(const json& params) {
@@ -274,10 +278,11 @@ struct Server::Impl {
       if (method == "textDocument/didOpen") {
         const json& doc = member(params, "textDocument");
         std::string uri = string_member(doc, "uri");
+        std::string text = string_member(doc, "text");
+        const json& version = member(doc, "version");
         OpenDocument& d = documents[uri];
-        d.text = string_member(doc, "text");
-        d.version =
-            member(doc, "version").is_number_integer() ? doc["version"].get<std::int64_t>() : 0;
+        d.text = std::move(text);
+        d.version = version.is_number_integer() ? version.get<std::int64_t>() : 0;
         analyse(uri, d);
       } else if (method == "textDocument/didChange") {
         changed(params);
@@ -285,8 +290,10 @@ struct Server::Impl {
         std::string uri = string_member(member(params, "textDocument"), "uri");
         if (documents.erase(uri))
           notify("textDocument/publishDiagnostics", {{"uri", uri}, {"diagnostics", json::array()}});
+      } else if (method == "textDocument/didSave") {
+        saved(string_member(member(params, "textDocument"), "uri"));
       }
-      // Other notifications (initialized, didSave, $/cancelRequest, ...) need nothing.
+      // Other notifications (initialized, $/cancelRequest, ...) need nothing.
     } catch (const std::exception&) {
       // A notification has no response to carry an error; a malformed one changes nothing.
     } catch (const RpcError&) {
@@ -318,6 +325,25 @@ struct Server::Impl {
     if (auto v = doc.find("version"); v != doc.end() && v->is_number_integer())
       it->second.version = v->get<std::int64_t>();
     analyse(uri, it->second);
+  }
+
+  // Imports are read from disk: the documents that import a file see its new text once saved.
+  void saved(const std::string& uri) {
+    std::optional<std::string> path = path_of_uri(uri);
+    if (!path) return;
+    std::error_code ec;
+    const std::filesystem::path file = std::filesystem::weakly_canonical(*path, ec);
+    for (auto& [other, d] : documents) {
+      if (other == uri || !d.analysis) continue;
+      const SourceManager& sources = d.analysis->sources();
+      for (std::uint32_t id = 0; id < sources.size(); ++id) {
+        if (id != d.analysis->root_id() &&
+            std::filesystem::weakly_canonical(sources.name(id), ec) == file) {
+          analyse(other, d);
+          break;
+        }
+      }
+    }
   }
 
   void analyse(const std::string& uri, OpenDocument& d) {

@@ -119,6 +119,13 @@ TEST_CASE("lsp session: diagnostics, hover, definition, completion, formatting, 
   CHECK(r_text.find("const r = 0.5 * 1.5") != std::string::npos);
   CHECK(r_text.find("value: `0.75`") != std::string::npos);
 
+  // Hover on the module Apex: its declaration.
+  s.request(13, "textDocument/hover",
+            {{"textDocument", doc(uri)}, {"position", position(line, 3)}});
+  const std::string apex = s.response(13)["result"]["contents"]["value"];
+  CHECK(apex.find("module Apex(l)") != std::string::npos);
+  CHECK(apex.find("1 production rewrites it") != std::string::npos);
+
   // Definition of `angle_deg`: the `param` line (1), at the name.
   s.request(4, "textDocument/definition",
             {{"textDocument", doc(uri)}, {"position", position(line, col)}});
@@ -249,4 +256,43 @@ TEST_CASE("lsp session: utf-8 positions when the client offers them") {
   CHECK(def[0]["range"]["start"] == position(0, 15));
   s.notify("exit");
   CHECK(s.wait_exit() == 1);  // exit without shutdown
+}
+
+TEST_CASE("lsp session: saving an imported file analyses the documents that import it again") {
+  const fs::path main = scratch("main.ramus"), part = scratch("part.ramus");
+  std::ofstream(part) << "param size = 2;\n";
+  const std::string main_text = "import \"part.ramus\";\nlsystem t {\n  axiom F(size);\n}\n";
+  std::ofstream(main) << main_text;
+  const std::string main_uri = ramus::lsp::uri_of_path(main.string());
+  const std::string part_uri = ramus::lsp::uri_of_path(part.string());
+  LspSession s;
+  initialize(s);
+  s.notify("textDocument/didOpen",
+           {{"textDocument",
+             {{"uri", main_uri}, {"languageId", "ramus"}, {"version", 1}, {"text", main_text}}}});
+  CHECK(s.diagnostics(main_uri).empty());
+  // Hover on the declared-in-import param, then break the import on disk and save it.
+  s.request(2, "textDocument/hover",
+            {{"textDocument", doc(main_uri)}, {"position", position(2, 11)}});
+  CHECK(s.response(2)["result"]["contents"]["value"].get<std::string>().find("param size = 2") !=
+        std::string::npos);
+  std::ofstream(part) << "param size = ;\n";
+  s.notify("textDocument/didOpen", {{"textDocument",
+                                     {{"uri", part_uri},
+                                      {"languageId", "ramus"},
+                                      {"version", 1},
+                                      {"text", "param size = ;\n"}}}});
+  CHECK_FALSE(s.diagnostics(part_uri).empty());
+  s.notify("textDocument/didSave", {{"textDocument", doc(part_uri)}});
+  json diags = s.diagnostics(main_uri);
+  // The syntax error of part.ramus at the import (and `size` is now unknown in main.ramus).
+  auto at_import = std::find_if(diags.begin(), diags.end(), [](const json& d) {
+    return d["range"]["start"] == position(0, 0) && d["code"] == "E0003";
+  });
+  REQUIRE(at_import != diags.end());
+  CHECK((*at_import)["relatedInformation"][0]["location"]["uri"] == part_uri);
+  s.request(3, "shutdown", nullptr);
+  s.response(3);
+  s.notify("exit");
+  CHECK(s.wait_exit() == 0);
 }
