@@ -51,6 +51,16 @@ std::optional<SourceSpan> import_reaching(const Analysis& a, std::uint32_t id) {
   return std::nullopt;
 }
 
+// A span of no characters (a missing `;` is reported just after the previous token) widened to
+// the character there, so that editors have something to underline; not across a line end.
+SourceSpan visible(const Analysis& a, SourceSpan span) {
+  const std::string& text = a.sources().text(span.file);
+  if (span.begin == span.end && span.end < text.size() && text[span.end] != '\n' &&
+      text[span.end] != '\r')
+    ++span.end;
+  return span;
+}
+
 }  // namespace
 
 std::vector<LspDiagnostic> document_diagnostics(const Analysis& a) {
@@ -61,7 +71,7 @@ std::vector<LspDiagnostic> document_diagnostics(const Analysis& a) {
     l.code = info(d.code).id;
     l.message = d.message;
     if (d.span.file == a.root_id()) {
-      l.range = a.range(d.span);
+      l.range = a.range(visible(a, d.span));
     } else {
       std::optional<SourceSpan> at = import_reaching(a, d.span.file);
       if (!at) continue;  // not from this document's imports (cannot happen; never shown wrong)
