@@ -43,10 +43,10 @@ std::vector<CompletionItem> completion_at(const Analysis& a, const Position& pos
     }
     items.push_back({d.name, CompletionKind::Constant, detail, a.comment_of(d.decl_span)});
   }
-  for (const std::string& name : module_names(a)) {
+  for (const ModuleName& m : module_names(a)) {
     // Turtle symbols (F and f among them) are offered below with their meaning.
-    if (!is_identifier(name) || find_word(turtle_symbols(), name)) continue;
-    items.push_back({name, CompletionKind::Class, "module " + module_signature(a, name), ""});
+    if (!is_identifier(m.name) || find_word(turtle_symbols(), m.name)) continue;
+    items.push_back({m.name, CompletionKind::Class, "module " + m.signature, ""});
   }
   for (const Definition& d : a.definitions()) {
     if (d.kind == K::Piece || d.kind == K::Rim)

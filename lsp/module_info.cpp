@@ -1,6 +1,8 @@
 #include "lsp/module_info.h"
 
 #include <algorithm>
+#include <unordered_map>
+#include <unordered_set>
 
 namespace ramus::lsp {
 
@@ -48,25 +50,36 @@ std::string module_signature(const Analysis& analysis, const std::string& name) 
   return name;
 }
 
-std::vector<std::string> module_names(const Analysis& analysis) {
-  std::vector<std::string> out;
-  auto add = [&](const std::string& n) {
-    if (!n.empty() && std::find(out.begin(), out.end(), n) == out.end()) out.push_back(n);
+std::vector<ModuleName> module_names(const Analysis& analysis) {
+  std::vector<ModuleName> out;
+  std::unordered_map<std::string, std::size_t> index;  // name -> its place in `out`
+  std::unordered_set<std::string> declared;
+  auto add = [&](const std::string& n, const ast::ModulePattern* pattern) {
+    if (n.empty()) return;
+    auto [it, fresh] = index.try_emplace(n, out.size());
+    if (fresh) out.push_back({n, n});
+    // The declaration wins; else the first pattern written with parentheses.
+    ModuleName& m = out[it->second];
+    if (pattern && !declared.count(n) && m.signature == n && pattern->has_parens)
+      m.signature = pattern_text(*pattern);
   };
   for (const Definition& d : analysis.definitions()) {
-    if (d.kind == Definition::Kind::Module) add(d.name);
+    if (d.kind != Definition::Kind::Module) continue;
+    add(d.name, d.pattern);
+    declared.insert(d.name);
   }
-  each_production(analysis, [&](const ast::Production& p) { add(p.predecessor.name); });
+  each_production(analysis,
+                  [&](const ast::Production& p) { add(p.predecessor.name, &p.predecessor); });
   for (const ast::File& file : analysis.program().files) {
     for (const ast::Decl& d : file.decls) {
       const auto* l = std::get_if<ast::LSystem>(&d);
       if (l == nullptr) continue;
       for (const ast::LSystemItem& item : l->items) {
         if (const auto* a = std::get_if<ast::Axiom>(&item)) {
-          for (const ast::ModuleCall& c : a->modules) add(c.name);
+          for (const ast::ModuleCall& c : a->modules) add(c.name, nullptr);
         } else if (const auto* p = std::get_if<ast::Production>(&item)) {
           for (const ast::Alternative& alt : p->alternatives) {
-            for (const ast::ModuleCall& c : alt.successor) add(c.name);
+            for (const ast::ModuleCall& c : alt.successor) add(c.name, nullptr);
           }
         }
       }

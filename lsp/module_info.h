@@ -17,9 +17,15 @@ std::vector<const ast::Production*> productions_of(const Analysis& analysis,
 // `A(l, w)`, `A` when no pattern gives parameter names.
 std::string module_signature(const Analysis& analysis, const std::string& name);
 
+struct ModuleName {
+  std::string name;
+  std::string signature;  // as module_signature gives it
+};
+
 // Every module name the program declares or rewrites, and those its axioms and successors use,
-// once each, in order of appearance.
-std::vector<std::string> module_names(const Analysis& analysis);
+// once each, in order of appearance, with their signatures (in one pass: a grammar of
+// thousands of modules is completed as fast as a small one).
+std::vector<ModuleName> module_names(const Analysis& analysis);
 
 // A pattern as written: `A(l, w)`.
 std::string pattern_text(const ast::ModulePattern& p);
