@@ -1,7 +1,12 @@
 #include "lsp/completion.h"
 
+#include <algorithm>
+#include <filesystem>
+#include <optional>
+
 #include "core/number_text.h"
 #include "grammar/format.h"
+#include "grammar/loader.h"
 #include "grammar/modules.h"
 #include "lsp/cursor.h"
 #include "lsp/language_words.h"
@@ -9,8 +14,53 @@
 
 namespace ramus::lsp {
 
+namespace {
+
+namespace fs = std::filesystem;
+
+// After `import` on the cursor's line, only what may be imported makes sense: the standard
+// library's modules (`trees.broadleaf`) and the .ramus files beside the document (quoted).
+std::optional<std::vector<CompletionItem>> import_items(const Analysis& a,
+                                                        const Position& position) {
+  const std::string& text = a.sources().text(a.root_id());
+  const std::size_t end = std::min<std::size_t>(a.offset_of(position), text.size());
+  std::size_t begin = end;
+  while (begin > 0 && text[begin - 1] != '\n' && text[begin - 1] != '\r') --begin;
+  const std::string_view before = std::string_view(text).substr(begin, end - begin);
+  std::size_t first = before.find_first_not_of(" \t");
+  if (first == std::string_view::npos || before.substr(first, 7) != "import " ||
+      before.find(';') != std::string_view::npos)
+    return std::nullopt;
+  std::vector<CompletionItem> items;
+  constexpr std::size_t kMost = 500;  // a stdlib in a huge folder must not stall the editor
+  std::error_code ec;
+  for (const std::string& dir : default_stdlib_dirs()) {
+    for (auto it = fs::recursive_directory_iterator(dir, ec);
+         !ec && it != fs::end(it) && items.size() < kMost; it.increment(ec)) {
+      if (it->path().extension() != ".ramus") continue;
+      std::string name = fs::relative(it->path(), dir, ec).replace_extension().generic_string();
+      std::replace(name.begin(), name.end(), '/', '.');
+      items.push_back({name, CompletionKind::Module, "standard library", ""});
+    }
+  }
+  const std::string& self = a.sources().name(a.root_id());
+  if (fs::path folder = fs::path(self).parent_path(); !folder.empty()) {
+    for (auto it = fs::directory_iterator(folder, ec);
+         !ec && it != fs::end(it) && items.size() < kMost; it.increment(ec)) {
+      if (it->path().extension() != ".ramus" || fs::equivalent(it->path(), self, ec)) continue;
+      items.push_back(
+          {"\"" + it->path().filename().string() + "\"", CompletionKind::File, "file", ""});
+    }
+  }
+  return items;
+}
+
+}  // namespace
+
 std::vector<CompletionItem> completion_at(const Analysis& a, const Position& position) {
   using K = Definition::Kind;
+  if (std::optional<std::vector<CompletionItem>> imports = import_items(a, position))
+    return *imports;
   std::vector<CompletionItem> items;
   auto word_items = [&](std::span<const Word> words, CompletionKind kind) {
     for (const Word& w : words) {

@@ -130,3 +130,22 @@ TEST_CASE("features: an error in an imported file is shown at the import") {
   CHECK(def[0].uri == uri_of_path((dir / "parts" / "leaf.ramus").string()));
   fs::remove_all(dir);
 }
+
+TEST_CASE("features: after `import`, completion offers the stdlib and the files beside") {
+  fs::path dir = fs::temp_directory_path() / ("ramus_lsp_imports_" + std::to_string(getpid()));
+  fs::create_directories(dir);
+  std::ofstream(dir / "leaf.ramus") << "const size = 1;\n";
+  const std::string path = (dir / "main.ramus").string();
+  const std::string text = "import t\nlsystem t {\n  axiom F;\n}\n";
+  Analysis a(uri_of_path(path), path, text, PositionEncoding::Utf16);
+  std::vector<std::string> labels;
+  for (const CompletionItem& i : completion_at(a, {0, 8})) labels.push_back(i.label);
+  CHECK(std::count(labels.begin(), labels.end(), "abop") == 1);
+  CHECK(std::count(labels.begin(), labels.end(), "trees.broadleaf") == 1);
+  CHECK(std::count(labels.begin(), labels.end(), "\"leaf.ramus\"") == 1);
+  CHECK(std::count(labels.begin(), labels.end(), "axiom") == 0);  // only what may be imported
+  std::vector<std::string> elsewhere;
+  for (const CompletionItem& i : completion_at(a, {2, 8})) elsewhere.push_back(i.label);
+  CHECK(std::count(elsewhere.begin(), elsewhere.end(), "trees.broadleaf") == 0);
+  fs::remove_all(dir);
+}
