@@ -4,8 +4,6 @@
 // symbols for .ramus files (docs/editors.md). Nothing but protocol messages goes to stdout.
 #include <unistd.h>
 
-#include <memory>
-
 #include "cli/command.h"
 #include "lsp/server.h"
 

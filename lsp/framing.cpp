@@ -30,8 +30,10 @@ FrameReader::FrameReader(ReadFn read, std::size_t max_body)
     : read_(std::move(read)), max_body_(max_body) {}
 
 bool FrameReader::fill() {
-  if (pos_ > 0 && pos_ == buffer_.size()) {
-    buffer_.clear();
+  // Drop what has been read, so that a long session of pipelined messages does not grow the
+  // buffer: only the unread tail (a partial message) is kept.
+  if (pos_ > 0) {
+    buffer_.erase(0, pos_);
     pos_ = 0;
   }
   char chunk[65536];
