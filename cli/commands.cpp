@@ -22,6 +22,7 @@ void add_dump(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_decompile(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_infer(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_compare(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_lsp(CLI::App&, const GlobalOptions&, std::function<int()>&);
 
 const std::vector<CommandSpec>& command_table() {
   static const std::vector<CommandSpec> table = {
@@ -43,6 +44,7 @@ const std::vector<CommandSpec>& command_table() {
       {"scan", add_scan},
       {"dump", add_dump},
       {"decompile", add_decompile},
+      {"lsp", add_lsp},
   };
   return table;
 }

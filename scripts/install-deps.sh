@@ -6,6 +6,7 @@ packages=(
   libboost-dev libeigen3-dev libtinygltf-dev libstb-dev libopenmesh-dev libcli11-dev
   catch2 libnanoflann-dev libtbb-dev libzstd-dev
   python3 python3-numpy python3-pywt python3-scipy nodejs
+  nlohmann-json3-dev  # JSON of the language server (lsp/): header only, keeps integer ids exact
   chromium  # headless browser: three.js loads the pieces outputs (tests/pieces/browser)
 )
 missing=()

@@ -33,7 +33,8 @@ const std::map<std::string, std::set<std::string>> kMayUse = {
     {"infer", {"core", "grammar", "compiler", "reconstruct"}},
     {"backends", {"core", "grammar", "compiler", "formats"}},
     {"runtime", {"core", "grammar", "compiler", "formats"}},
-    {"cli", {"core", "grammar", "compiler", "formats", "reconstruct", "infer", "backends"}},
+    {"lsp", {"core", "grammar"}},
+    {"cli", {"core", "grammar", "compiler", "formats", "reconstruct", "infer", "backends", "lsp"}},
 };
 
 bool is_source(const fs::path& p) {
