@@ -100,10 +100,11 @@ class ModelBuilder : public GltfBufferBuilder {
     std::vector<std::uint16_t> joints(4 * n, 0);
     for (std::size_t i = 0; i < n; ++i) {
       const JointBinding b = rig.binding(part.skin_node[i]);
-      joints[4 * i] = std::uint16_t(b.a);
       const int second = b.b != b.a ? int(std::lround(255.0 * b.t)) : 0;
-      weights[4 * i] = std::uint8_t(255 - second);
-      if (second > 0) {
+      // A joint with zero weight must be index 0 (the validator's rule): all on b, b first.
+      joints[4 * i] = std::uint16_t(second == 255 ? b.b : b.a);
+      weights[4 * i] = std::uint8_t(second == 255 ? 255 : 255 - second);
+      if (second > 0 && second < 255) {
         joints[4 * i + 1] = std::uint16_t(b.b);
         weights[4 * i + 1] = std::uint8_t(second);
       }

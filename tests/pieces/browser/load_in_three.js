@@ -4,12 +4,16 @@
 // once and prints one JSON line per file:
 //   {"file", "skinnedMeshes", "bones", "skins", "meshes", "instancedMeshes", "instances",
 //    "drawCalls", "triangles", "drawnPixels", "pixels", "minX", "minY", "minZ", "maxX", "maxY",
-//    "maxZ"}
+//    "maxZ", "loadMs", "animations", "period", "tipMove", "baseMove"}
 // skinnedMeshes counts THREE.SkinnedMesh objects, bones the distinct THREE.Bone objects,
 // skins the distinct skeletons, instances the sum of InstancedMesh counts; drawCalls and
 // triangles come from renderer.info after one render; drawnPixels are the pixels of the
 // 256 x 256 picture whose colour differs from the background; min/max are the world bounds of
 // what is drawn, in three.js's y-up frame (glTF's), so a test can see which way is up.
+// Draco and meshopt files load through three's DRACOLoader and MeshoptDecoder; loadMs is the
+// time GLTFLoader took (fetch, decode, build). A file with animations plays its first clip:
+// period is its duration, tipMove the largest displacement between time 0 and a quarter period
+// of a drawn vertex in the top tenth of the tree, baseMove the same in the bottom 2 %.
 // The files are served from a localhost HTTP server; the browser gets a fresh profile. With
 // RAMUS_THREE_SCREENSHOTS=1 the picture of each file is kept as FILE.three.png.
 //   node load_in_three.js FILE.glb...
@@ -54,8 +58,51 @@ const PAGE = `<!doctype html><html><head><meta charset="utf-8">
 <script type="module">
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { DRACOLoader } from 'three/addons/loaders/DRACOLoader.js';
+import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
+const draco = new DRACOLoader().setDecoderPath('/three/examples/jsm/libs/draco/gltf/');
+// The drawn vertices of every mesh (skinned ones posed), in world space.
+function drawnVertices(scene) {
+  const out = [];
+  const v = new THREE.Vector3();
+  scene.updateMatrixWorld(true);
+  scene.traverse((o) => {
+    if (!o.isMesh || o.isInstancedMesh) return;
+    if (o.isSkinnedMesh) o.skeleton.update();
+    const pos = o.geometry.attributes.position;
+    for (let i = 0; i < pos.count; i++) {
+      if (o.isSkinnedMesh) o.getVertexPosition(i, v); else v.fromBufferAttribute(pos, i);
+      v.applyMatrix4(o.matrixWorld);
+      out.push(v.x, v.y, v.z);
+    }
+  });
+  return out;
+}
+// Plays the first clip: how far the top and the base of the tree move by a quarter period.
+function sampleWind(gltf, box) {
+  const clip = gltf.animations[0];
+  const mixer = new THREE.AnimationMixer(gltf.scene);
+  mixer.clipAction(clip).play();
+  mixer.setTime(0);
+  const rest = drawnVertices(gltf.scene);
+  mixer.setTime(clip.duration / 4);
+  const moved = drawnVertices(gltf.scene);
+  mixer.setTime(0);
+  gltf.scene.updateMatrixWorld(true);
+  const h = box.max.y - box.min.y;
+  let tip = 0, base = 0;
+  for (let i = 0; i < rest.length; i += 3) {
+    const d = Math.hypot(moved[i] - rest[i], moved[i + 1] - rest[i + 1], moved[i + 2] - rest[i + 2]);
+    if (rest[i + 1] >= box.min.y + 0.9 * h) tip = Math.max(tip, d);
+    if (rest[i + 1] <= box.min.y + 0.02 * h) base = Math.max(base, d);
+  }
+  return { period: clip.duration, tipMove: tip, baseMove: base };
+}
 window.loadAndRender = async (url) => {
-  const gltf = await new GLTFLoader().loadAsync(url);
+  const start = performance.now();
+  const gltf = await new GLTFLoader().setDRACOLoader(draco).setMeshoptDecoder(MeshoptDecoder)
+    .loadAsync(url);
+  const loadMs = performance.now() - start;
   const scene = new THREE.Scene();
   const background = new THREE.Color(0x000000);
   scene.background = background;
@@ -137,7 +184,8 @@ window.loadAndRender = async (url) => {
     instancedMeshes: instanced, instances, drawCalls: renderer.info.render.calls,
     triangles: renderer.info.render.triangles, drawnPixels: drawn, pixels: size * size,
     minX: box.min.x, minY: box.min.y, minZ: box.min.z, maxX: box.max.x, maxY: box.max.y,
-    maxZ: box.max.z };
+    maxZ: box.max.z, loadMs, animations: gltf.animations.length };
+  if (gltf.animations.length) Object.assign(result, sampleWind(gltf, box));
   if (window.screenshotWanted) result.png = canvas.toDataURL('image/png');
   renderer.dispose();
   canvas.remove();
