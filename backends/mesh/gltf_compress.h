@@ -14,7 +14,8 @@ enum class GltfCompression {
   // and WEIGHTS_0 8 (Draco's own quantization), joint indices lossless.
   kDraco,
   // EXT_meshopt_compression with KHR_mesh_quantization: vertices in cache-friendly order;
-  // positions float with 14 mantissa bits, texture coordinates float with 12, normals 8-bit
+  // positions and texture coordinates float through the EXPONENTIAL filter (16 and 12 bits of
+  // mantissa per vector), normals 8-bit
   // octahedral (OCTAHEDRAL filter), _WIND and WEIGHTS_0 normalized bytes.
   kMeshopt,
 };

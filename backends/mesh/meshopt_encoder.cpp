@@ -45,6 +45,11 @@ std::vector<std::int8_t> meshopt_octahedral(const float* normals, std::size_t co
   return out;
 }
 
-float meshopt_round_float(float v, int bits) { return meshopt_quantizeFloat(v, bits); }
+std::vector<std::uint32_t> meshopt_exponential(const float* data, std::size_t count, int components,
+                                               int bits) {
+  std::vector<std::uint32_t> out(count * components);
+  meshopt_encodeFilterExp(out.data(), count, std::size_t(components) * 4, bits, data);
+  return out;
+}
 
 }  // namespace ramus::mesh

@@ -26,7 +26,9 @@ std::string meshopt_encode_triangles(const std::vector<std::uint32_t>& indices,
 // Unit normals (count * 3 floats) as the OCTAHEDRAL filter's 8-bit x, y, z, w per vertex.
 std::vector<std::int8_t> meshopt_octahedral(const float* normals, std::size_t count);
 
-// `v` with all but `bits` bits of its mantissa cleared (rounded): a float the codec packs well.
-float meshopt_round_float(float v, int bits);
+// Floats (count vectors of `components` each) as the EXPONENTIAL filter stores them: one 8-bit
+// exponent per vector and a `bits`-bit integer mantissa per component, as 32-bit words.
+std::vector<std::uint32_t> meshopt_exponential(const float* data, std::size_t count, int components,
+                                               int bits);
 
 }  // namespace ramus::mesh

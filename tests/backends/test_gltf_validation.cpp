@@ -86,9 +86,9 @@ TEST_CASE("written glTF files pass the Khronos validator with no errors or warni
   wind_options.wind = true;
   wind_options.lod_count = 3;
   const auto windy = build_tree_lods(testing::synthetic_tree(14, 600), wind_options);
-  for (const auto& [name, how] : {std::pair{"wind", GltfCompression::kNone},
-                                  std::pair{"draco", GltfCompression::kDraco},
-                                  std::pair{"meshopt", GltfCompression::kMeshopt}}) {
+  for (const auto& [name, how] :
+       {std::pair{"wind", GltfCompression::kNone}, std::pair{"draco", GltfCompression::kDraco},
+        std::pair{"meshopt", GltfCompression::kMeshopt}}) {
     for (const char* ext : {".glb", ".gltf"}) {
       const fs::path f = dir / (std::string(name) + ext);
       write_gltf(windy, f.string(), how);

@@ -13,7 +13,8 @@
 // Draco and meshopt files load through three's DRACOLoader and MeshoptDecoder; loadMs is the
 // time GLTFLoader took (fetch, decode, build). A file with animations plays its first clip:
 // period is its duration, tipMove the largest displacement between time 0 and a quarter period
-// of a drawn vertex in the top tenth of the tree, baseMove the same in the bottom 2 %.
+// of a drawn vertex in the top tenth of the tree, baseMove the same within 3 % of the height of
+// the trunk's foot (the skin's first joint, else the lowest vertex).
 // The files are served from a localhost HTTP server; the browser gets a fresh profile. With
 // RAMUS_THREE_SCREENSHOTS=1 the picture of each file is kept as FILE.three.png.
 //   node load_in_three.js FILE.glb...
@@ -90,11 +91,23 @@ function sampleWind(gltf, box) {
   mixer.setTime(0);
   gltf.scene.updateMatrixWorld(true);
   const h = box.max.y - box.min.y;
+  // The trunk's foot: the first joint of the skin (ramus puts it there), else the lowest vertex;
+  // its base the vertices within 3 % of the height of it.
+  let foot = null;
+  gltf.scene.traverse((o) => {
+    if (!foot && o.isSkinnedMesh) foot = o.skeleton.bones[0].getWorldPosition(new THREE.Vector3());
+  });
+  if (!foot) {
+    let low = 0;
+    for (let i = 0; i < rest.length; i += 3) if (rest[i + 1] < rest[low + 1]) low = i;
+    foot = new THREE.Vector3(rest[low], rest[low + 1], rest[low + 2]);
+  }
   let tip = 0, base = 0;
   for (let i = 0; i < rest.length; i += 3) {
     const d = Math.hypot(moved[i] - rest[i], moved[i + 1] - rest[i + 1], moved[i + 2] - rest[i + 2]);
     if (rest[i + 1] >= box.min.y + 0.9 * h) tip = Math.max(tip, d);
-    if (rest[i + 1] <= box.min.y + 0.02 * h) base = Math.max(base, d);
+    const near = Math.hypot(rest[i] - foot.x, rest[i + 1] - foot.y, rest[i + 2] - foot.z);
+    if (near <= 0.03 * h) base = Math.max(base, d);
   }
   return { period: clip.duration, tipMove: tip, baseMove: base };
 }
@@ -196,7 +209,11 @@ window.pageReady = true;
 
 function serve() {
   const roots = { '/three/': path.join(tools, 'three') + '/' };
-  const served = new Map(files.map((f, i) => [`/files/${i}${path.extname(f)}`, f]));
+  // /files/I/NAME is NAME in the folder of file I, so a .gltf finds its .bin beside it.
+  const served = (url) => {
+    const m = /^\/files\/(\d+)\/([^/]+)$/.exec(url);
+    return m && files[Number(m[1])] ? path.join(path.dirname(files[Number(m[1])]), m[2]) : null;
+  };
   const server = http.createServer((req, res) => {
     const url = decodeURIComponent(req.url.split('?')[0]);
     let file = null;
@@ -205,7 +222,7 @@ function serve() {
       res.end(PAGE);
       return;
     }
-    if (served.has(url)) file = served.get(url);
+    if (url.startsWith('/files/')) file = served(url);
     for (const [prefix, dir] of Object.entries(roots)) {
       if (url.startsWith(prefix) && !url.includes('..')) file = dir + url.slice(prefix.length);
     }
@@ -257,7 +274,7 @@ function serve() {
     if (!webgl) cannotRun('no WebGL 2 context in headless Chromium');
     for (let i = 0; i < files.length; i++) {
       try {
-        const url = `/files/${i}${path.extname(files[i])}`;
+        const url = `/files/${i}/${encodeURIComponent(path.basename(files[i]))}`;
         if (process.env.RAMUS_THREE_SCREENSHOTS) await page.evaluate(() => { window.screenshotWanted = true; });
         const r = await page.evaluate((u) => window.loadAndRender(u), url);
         if (r.png) {
