@@ -23,29 +23,13 @@
 'use strict';
 const fs = require('fs');
 const http = require('http');
-const os = require('os');
 const path = require('path');
+const { tools, launch, cannotRun } = require('./chromium.js');
 
-const tools = path.join(__dirname, '..', '..', '..', 'tools', 'node_modules');
-const CHROMIUM = process.env.RAMUS_CHROMIUM || '/usr/bin/chromium';
-
-function cannotRun(why) {
-  console.error(`chromium cannot run: ${why}`);
-  process.exit(77);
-}
-
-let chromium;
-try {
-  ({ chromium } = require(path.join(tools, 'playwright-core')));
-} catch (e) {
-  console.error('playwright-core is not installed: run scripts/install-deps.sh (npm install in tools/)');
-  process.exit(2);
-}
 if (!fs.existsSync(path.join(tools, 'three', 'build', 'three.module.js'))) {
   console.error('three is not installed: run scripts/install-deps.sh (npm install in tools/)');
   process.exit(2);
 }
-if (!fs.existsSync(CHROMIUM)) cannotRun(`${CHROMIUM} does not exist (Debian package chromium)`);
 
 const files = process.argv.slice(2);
 if (files.length === 0) {
@@ -247,22 +231,13 @@ function serve() {
   }
   const server = await serve();
   const port = server.address().port;
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'ramus-chromium-'));
-  let context;
+  let browser;
   try {
-    context = await chromium.launchPersistentContext(profile, {
-      executablePath: CHROMIUM,
-      headless: true,
-      timeout: 60000,
-      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-        '--disable-background-networking', '--disable-component-update', '--disable-sync',
-        '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-    });
-  } catch (e) {
-    server.close();
-    fs.rmSync(profile, { recursive: true, force: true });
-    cannotRun(String(e.message || e).split('\n')[0]);
+    browser = await launch();
+  } finally {
+    if (!browser) server.close();
   }
+  const { context } = browser;
   let status = 0;
   try {
     const page = await context.newPage();
@@ -293,9 +268,8 @@ function serve() {
       status = 1;
     }
   } finally {
-    await context.close();
+    await browser.close();
     server.close();
-    fs.rmSync(profile, { recursive: true, force: true });
   }
   process.exit(status);
 })().catch((e) => {
