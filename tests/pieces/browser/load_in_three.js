@@ -4,12 +4,15 @@
 // once and prints one JSON line per file:
 //   {"file", "skinnedMeshes", "bones", "skins", "meshes", "instancedMeshes", "instances",
 //    "drawCalls", "triangles", "drawnPixels", "pixels", "minX", "minY", "minZ", "maxX", "maxY",
-//    "maxZ", "loadMs", "animations", "period", "tipMove", "baseMove"}
+//    "maxZ", "rootX", "rootY", "rootZ", "footY", "loadMs", "animations", "period", "tipMove",
+//    "baseMove"}
 // skinnedMeshes counts THREE.SkinnedMesh objects, bones the distinct THREE.Bone objects,
 // skins the distinct skeletons, instances the sum of InstancedMesh counts; drawCalls and
 // triangles come from renderer.info after one render; drawnPixels are the pixels of the
 // 256 x 256 picture whose colour differs from the background; min/max are the world bounds of
 // what is drawn, in three.js's y-up frame (glTF's), so a test can see which way is up.
+// root* is the world position of the scene's first node (a georeferenced tree's offset), footY
+// the lowest drawn point within 1 % of the height of it (the trunk's foot, when it is there).
 // Draco and meshopt files load through three's DRACOLoader and MeshoptDecoder; loadMs is the
 // time GLTFLoader took (fetch, decode, build). A file with animations plays its first clip:
 // period is its duration, tipMove the largest displacement between time 0 and a quarter period
@@ -182,6 +185,18 @@ window.loadAndRender = async (url) => {
     triangles: renderer.info.render.triangles, drawnPixels: drawn, pixels: size * size,
     minX: box.min.x, minY: box.min.y, minZ: box.min.z, maxX: box.max.x, maxY: box.max.y,
     maxZ: box.max.z, loadMs, animations: gltf.animations.length };
+  // The root node's world position (a georeferenced tree's offset) and the lowest drawn point
+  // within 1 % of the height of it (the trunk's foot, for a tree grown from the origin).
+  const root = gltf.scene.children[0].getWorldPosition(new THREE.Vector3());
+  const all = instanced ? [] : drawnVertices(gltf.scene);
+  let footY = Infinity;
+  for (let i = 0; i < all.length; i += 3) {
+    if (Math.hypot(all[i] - root.x, all[i + 1] - root.y, all[i + 2] - root.z) <=
+        0.01 * (box.max.y - box.min.y))
+      footY = Math.min(footY, all[i + 1]);
+  }
+  Object.assign(result, { rootX: root.x, rootY: root.y, rootZ: root.z,
+    footY: Number.isFinite(footY) ? footY : null });
   if (gltf.animations.length) Object.assign(result, sampleWind(gltf, box));
   if (window.screenshotWanted) result.png = canvas.toDataURL('image/png');
   renderer.dispose();
