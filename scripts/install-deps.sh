@@ -7,6 +7,10 @@ packages=(
   catch2 libnanoflann-dev libtbb-dev libzstd-dev
   python3 python3-numpy python3-pywt python3-scipy nodejs
   chromium  # headless browser: three.js loads the pieces outputs (tests/pieces/browser)
+  libdraco-dev libmeshoptimizer-dev nlohmann-json3-dev  # --compress draco|meshopt (gltf_compress)
+  # Blender's and Godot's glTF importers load the demo tree (scripts/check-engines.sh); with Xvfb
+  # for Godot's editor, which imports assets. ~63 s to install on the project machine.
+  blender godot3 xvfb xauth
 )
 missing=()
 for p in "${packages[@]}"; do

@@ -141,11 +141,14 @@ class ModelBuilder : public GltfBufferBuilder {
 // Keys per period of the wind clip: enough for a smooth sine at two swings per period.
 constexpr int kWindKeys = 32;
 
-// The wind skin: joint nodes (children of node 0, the root joints carrying the local origin),
-// one skin shared by every level's node, and the looping animation "wind" of the joints'
-// rotations (wind_rig.h). Joints rest without rotation, so each turns about its axis as given.
-void add_wind(ModelBuilder& b, const WindRig& rig, const Vec3& origin, int levels) {
+// The wind skin: joint nodes (the root joints, which carry the local origin, are scene roots
+// beside the tree's node: Godot 3.2's importer hangs on a skinned mesh whose node is its
+// joints' parent), one skin shared by every level's node, and the looping animation "wind" of
+// the joints' rotations (wind_rig.h). Joints rest without rotation, so each turns about its
+// axis as given. Returns the root joints.
+std::vector<int> add_wind(ModelBuilder& b, const WindRig& rig, const Vec3& origin, int levels) {
   auto& model = b.model();
+  std::vector<int> roots;
   const int first = int(model.nodes.size());
   std::vector<float> inverse_bind;
   tinygltf::Skin skin;
@@ -159,7 +162,7 @@ void add_wind(ModelBuilder& b, const WindRig& rig, const Vec3& origin, int level
     if (t != Vec3{}) node.translation = {t.x, t.y, t.z};
     model.nodes.push_back(node);
     if (w.parent == kNoJoint) {
-      model.nodes[0].children.push_back(first + int(j));
+      roots.push_back(first + int(j));
     } else {
       model.nodes[first + w.parent].children.push_back(first + int(j));
     }
@@ -203,6 +206,7 @@ void add_wind(ModelBuilder& b, const WindRig& rig, const Vec3& origin, int level
     anim.channels.push_back(channel);
   }
   if (!anim.channels.empty()) model.animations.push_back(anim);
+  return roots;
 }
 
 void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
@@ -255,10 +259,12 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
     model.nodes[0].extras = tinygltf::Value(std::move(extras));
     model.extensionsUsed.push_back("MSFT_lod");
   }
-  if (!rig.empty()) add_wind(b, rig, lods.front().origin, int(lods.size()));
+  const std::vector<int> joint_roots =
+      rig.empty() ? std::vector<int>{} : add_wind(b, rig, lods.front().origin, int(lods.size()));
   tinygltf::Scene scene;
   scene.name = tree;
   scene.nodes = {0};
+  scene.nodes.insert(scene.nodes.end(), joint_roots.begin(), joint_roots.end());
   model.scenes.push_back(scene);
   model.defaultScene = 0;
   if (model.buffers[0].data.size() > 0xfffffff0ull) {

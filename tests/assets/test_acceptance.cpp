@@ -55,7 +55,9 @@ TEST_CASE("every example and reconstruction validates and loads upright where ra
       if (e.path().extension() == ".ramus") grammars.push_back(e.path());
   std::sort(grammars.begin(), grammars.end());
   for (const fs::path& g : grammars) {
-    Case c{g.parent_path().filename().string() + "_" + g.stem().string(), {}, {},
+    Case c{g.parent_path().filename().string() + "_" + g.stem().string(),
+           {},
+           {},
            g.parent_path().filename() != "abop"};
     c.glb = dir.path / (c.name + ".glb");
     c.obj = dir.path / (c.name + ".obj");
