@@ -97,6 +97,7 @@ void add_view(CLI::App& app, const GlobalOptions& global, std::function<int()>& 
   CLI::App* sub = app.add_subcommand(
       "view", "write a self-contained HTML page that shows a .glb/.gltf or a grammar's tree");
   add_grow_options(sub, args->grow);
+  sub->get_option("file")->description("the asset: .glb, .gltf or a grammar (.ramus)");
   output_path(sub->add_option("-o,--output", args->output, "the page (.html)"))
       ->required()
       ->check(CLI::Validator(
