@@ -51,7 +51,10 @@ void add_pieces_build_options(CLI::App* sub, PiecesBuildArgs& a) {
                   "pieces: K trees of the same topology in K seeded poses (default 1)")
       ->check(CLI::Range(1, 100000))
       ->group(group);
-  sub->add_flag("--wind", a.wind, "pieces: add a looping wind clip (glTF animation)")->group(group);
+  sub->add_flag("--wind", a.wind,
+                "a looping wind animation (glTF): pieces: a clip of the bones; mesh: a skin along "
+                "the branch chains")
+      ->group(group);
   output_path(sub->add_option(
                   "--instance-buffer", a.instance_buffer,
                   "pieces: also write the engine instance buffer (.bin) and its .json manifest"))

@@ -1,11 +1,13 @@
 // ramus build FILE -o OUT.glb|.gltf|.obj|.ply [--target mesh] [--lod N] [--lod-files] [--up y|z]
 //                  [--seed S] [-n N] [-D name=value]... [--system NAME] [--pipe-exponent E]
-//                  [--leaves quad|crossed] [--leaf-scale K]
+//                  [--leaves quad|crossed] [--leaf-scale K] [--wind] [--compress draco|meshopt]
 // Grows the grammar and writes its tree as a mesh (docs/mesh.md). glTF gets the levels of
 // detail LOD0..LOD N as separate meshes switched by MSFT_lod; OBJ and PLY hold one mesh, level N.
 // --lod-files writes OUT_LOD0 .. OUT_LODN instead, one level per file, for engines without
-// MSFT_lod.
+// MSFT_lod. --wind adds the wind skin and its looping animation (glTF only), --compress
+// compresses the glTF's geometry (backends/mesh/gltf_compress.h).
 // --target pieces writes skinned piece instances instead (build_pieces.h, docs/pieces.md).
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -32,6 +34,8 @@ struct BuildArgs {
   double pipe_exponent = 0;
   std::string leaves = "quad";
   double leaf_scale = 1;
+  std::string compress;            // --compress: "", "draco" or "meshopt"
+  std::vector<std::string> given;  // the options the command line gave
   PiecesBuildArgs pieces;
   BinaryBuildArgs binary;
 };
@@ -45,11 +49,56 @@ void print_warnings(const mesh::MeshReport& report) {
     std::fprintf(stderr, "ramus: warning: %s\n", w.c_str());
 }
 
-// Options of the mesh target given with another target are mistakes, not silently ignored.
-void check_mesh_only_options(const BuildArgs& a) {
-  if (a.target == "mesh") return;
-  if (!a.up.empty()) throw UserError("--up applies to --target mesh only");
-  if (a.lod_files) throw UserError("--lod-files applies to --target mesh only");
+// The options each target reads; any other given with it is a mistake, not silently ignored.
+const std::vector<std::string>& target_options(const std::string& target) {
+  static const std::vector<std::string> mesh = {"--lod",           "--lod-files", "--up",
+                                                "--pipe-exponent", "--leaves",    "--leaf-scale",
+                                                "--wind",          "--compress"};
+  static const std::vector<std::string> pieces = {"--lod",     "--flatten", "--gpu-instancing",
+                                                  "--poses",   "--wind",    "--instance-buffer",
+                                                  "--preview", "--pieces"};
+  static const std::vector<std::string> binary = {"--tolerance", "--zstd", "--strip",
+                                                  "--rmb-version", "--mesh-paths"};
+  return target == "pieces" ? pieces : target == "binary" ? binary : mesh;
+}
+
+// Every target-specific option on the command line, for check_target_options.
+const std::vector<std::string>& all_target_options() {
+  static const std::vector<std::string> all = [] {
+    std::vector<std::string> v;
+    for (const char* t : {"mesh", "pieces", "binary"})
+      for (const std::string& o : target_options(t))
+        if (std::find(v.begin(), v.end(), o) == v.end()) v.push_back(o);
+    return v;
+  }();
+  return all;
+}
+
+void check_target_options(const BuildArgs& a, bool gltf) {
+  const auto& mine = target_options(a.target);
+  for (const std::string& o : a.given) {
+    if (std::find(mine.begin(), mine.end(), o) != mine.end()) continue;
+    std::string targets;
+    for (const char* t : {"mesh", "pieces", "binary"}) {
+      const auto& theirs = target_options(t);
+      if (std::find(theirs.begin(), theirs.end(), o) == theirs.end()) continue;
+      targets += (targets.empty() ? "" : " and ") + std::string(t);
+    }
+    throw UserError(o + " applies to --target " + targets + " only");
+  }
+  if (a.target != "mesh" || gltf) return;
+  // OBJ and PLY have neither animation nor a compressed form.
+  if (a.pieces.wind)
+    throw UserError(
+        "--wind needs a glTF output (.glb or .gltf): OBJ and PLY "
+        "have no animation");
+  if (!a.compress.empty()) throw UserError("--compress needs a glTF output (.glb or .gltf)");
+}
+
+mesh::GltfCompression compression(const std::string& name) {
+  return name == "draco"     ? mesh::GltfCompression::kDraco
+         : name == "meshopt" ? mesh::GltfCompression::kMeshopt
+                             : mesh::GltfCompression::kNone;
 }
 
 // Writes the levels, each to its own file (--lod-files) or together; returns the triangles of
@@ -60,13 +109,13 @@ std::size_t write_levels(const std::vector<mesh::TreeMesh>& lods, const BuildArg
     for (std::size_t k = 0; k < lods.size(); ++k) {
       const std::string path = lod_file_path(a.output, int(k));
       if (gltf) {
-        mesh::write_gltf({lods[k]}, path);
+        mesh::write_gltf({lods[k]}, path, compression(a.compress));
       } else {
         mesh::write_openmesh(lods[k], path, up);
       }
     }
   } else if (gltf) {
-    mesh::write_gltf(lods, a.output);
+    mesh::write_gltf(lods, a.output, compression(a.compress));
   } else {
     mesh::write_openmesh(lods.back(), a.output, up);
   }
@@ -74,7 +123,8 @@ std::size_t write_levels(const std::vector<mesh::TreeMesh>& lods, const BuildArg
 }
 
 int run_build(const BuildArgs& a, const GlobalOptions& global) {
-  check_mesh_only_options(a);
+  const std::string out_ext = extension(a.output);
+  check_target_options(a, out_ext == ".glb" || out_ext == ".gltf");
   if (a.target == "binary") return build_binary(a.grow, a.binary, a.output, global.quiet);
   if (a.target == "pieces") {
     PiecesBuildArgs p = a.pieces;
@@ -93,6 +143,7 @@ int run_build(const BuildArgs& a, const GlobalOptions& global) {
   o.pipe_exponent = a.pipe_exponent;
   o.leaf_style = a.leaves == "crossed" ? mesh::LeafStyle::kCrossed : mesh::LeafStyle::kQuad;
   o.leaf_scale = a.leaf_scale;
+  o.wind = a.pieces.wind;
   mesh::MeshReport report;
   std::size_t triangles = 0;
   try {
@@ -104,6 +155,8 @@ int run_build(const BuildArgs& a, const GlobalOptions& global) {
       lods.push_back(mesh::build_tree_mesh(*skeleton, o, a.lod, &report));
     }
     print_warnings(report);
+    if (o.wind && lods.front().wind_rig.animated_joints() == 0)
+      throw UserError("--wind: the tree has no branch long enough to sway");
     triangles = write_levels(lods, a, up, gltf);
   } catch (const mesh::MeshError& e) {
     throw UserError(e.what());
@@ -154,10 +207,17 @@ void add_build(CLI::App& app, const GlobalOptions& global, std::function<int()>&
       ->check(CLI::IsMember({"quad", "crossed"}));
   sub->add_option("--leaf-scale", args->leaf_scale, "leaf length per unit of organ size")
       ->check(CLI::PositiveNumber);
+  sub->add_option("--compress", args->compress,
+                  "glTF: compress the geometry with draco (KHR_draco_mesh_compression) or "
+                  "meshopt (EXT_meshopt_compression, KHR_mesh_quantization); see docs/mesh.md")
+      ->check(CLI::IsMember({"draco", "meshopt"}));
   add_pieces_build_options(sub, args->pieces);
   add_binary_build_options(sub, args->binary);
-  sub->callback(
-      [args, &global, &run] { run = [args, &global] { return run_build(*args, global); }; });
+  sub->callback([args, sub, &global, &run] {
+    for (const std::string& o : all_target_options())
+      if (sub->count(o) > 0) args->given.push_back(o);
+    run = [args, &global] { return run_build(*args, global); };
+  });
 }
 
 }  // namespace ramus::cli

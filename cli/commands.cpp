@@ -15,6 +15,7 @@ void add_propagate(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_inspect(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_build(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_preview(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_view(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_reconstruct(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_classify(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_scan(CLI::App&, const GlobalOptions&, std::function<int()>&);
@@ -39,6 +40,7 @@ const std::vector<CommandSpec>& command_table() {
       {"inspect", add_inspect},
       {"build", add_build},
       {"preview", add_preview},
+      {"view", add_view},
       {"reconstruct", add_reconstruct},
       {"classify", add_classify},
       {"scan", add_scan},

@@ -17,6 +17,10 @@ struct WindField {
 };
 WindField make_wind_field(const Skeleton& s, const PreparedSkeleton& p);
 
+// The wind skin's joints along the chains and each node's binding (wind_rig.h).
+WindRig make_wind_rig(const Skeleton& s, const PreparedSkeleton& p, const WindField& wind,
+                      const WindRigOptions& options);
+
 struct TubeParams {
   int max_segments = 12;
   int min_segments = 3;

@@ -49,6 +49,16 @@ std::optional<std::string> gltf_json_with_buffer_uri(const std::string& glb,
   return json + "\n";
 }
 
+std::string glb_bin(const std::string& glb) {
+  std::uint32_t json_len = 0, bin_len = 0;
+  if (glb.size() < 20) return {};
+  std::memcpy(&json_len, glb.data() + 12, 4);
+  const std::size_t at = 20 + std::size_t(json_len);
+  if (at + 8 > glb.size()) return {};
+  std::memcpy(&bin_len, glb.data() + at, 4);
+  return glb.substr(at + 8, bin_len);
+}
+
 bool write_gltf_files(
     const std::string& path,
     const std::function<GltfBytes(bool binary, const std::string& bin_uri)>& encode) {

@@ -18,6 +18,9 @@ struct GltfBytes {
 std::optional<std::string> gltf_json_with_buffer_uri(const std::string& glb,
                                                      const std::string& bin_uri);
 
+// The binary chunk of a GLB ("" when it has none).
+std::string glb_bin(const std::string& glb);
+
 // Writes `path` atomically: for .glb the bytes encode(true, "") gives; for .gltf the JSON of
 // encode(false, "<stem>.bin") and that .bin beside it. Returns false, writing nothing, when
 // `path` ends in neither (the caller reports it in its own error type).

@@ -89,7 +89,42 @@ class ModelBuilder : public GltfBufferBuilder {
     return int(model_.materials.size() - 1);
   }
 
-  tinygltf::Primitive add_part(const MeshPart& part, int material) {
+  // JOINTS_0 and WEIGHTS_0 of the wind skin: each vertex follows its node's two joints.
+  void add_skin_attributes(tinygltf::Primitive& prim, const MeshPart& part, const WindRig& rig) {
+    if (part.skin_node.size() != part.vertex_count())
+      throw MeshError("the wind skin needs the skeleton node of every vertex");
+    const std::size_t n = part.vertex_count();
+    // Weights as normalized bytes summing to exactly 255 (glTF 3.7.3.3 allows them unquantized
+    // or so), a quarter of the floats' size.
+    std::vector<std::uint8_t> weights(4 * n, 0);
+    std::vector<std::uint16_t> joints(4 * n, 0);
+    for (std::size_t i = 0; i < n; ++i) {
+      const JointBinding b = rig.binding(part.skin_node[i]);
+      const int second = b.b != b.a ? int(std::lround(255.0 * b.t)) : 0;
+      // A joint with zero weight must be index 0 (the validator's rule): all on b, b first.
+      joints[4 * i] = std::uint16_t(second == 255 ? b.b : b.a);
+      weights[4 * i] = std::uint8_t(second == 255 ? 255 : 255 - second);
+      if (second > 0 && second < 255) {
+        joints[4 * i + 1] = std::uint16_t(b.b);
+        weights[4 * i + 1] = std::uint8_t(second);
+      }
+    }
+    if (rig.joints.size() <= 256) {
+      const std::vector<std::uint8_t> small(joints.begin(), joints.end());
+      prim.attributes["JOINTS_0"] =
+          add_accessor(add_view(small.data(), small.size(), TINYGLTF_TARGET_ARRAY_BUFFER),
+                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, n, TINYGLTF_TYPE_VEC4);
+    } else {
+      prim.attributes["JOINTS_0"] =
+          add_accessor(add_view(joints.data(), joints.size() * 2, TINYGLTF_TARGET_ARRAY_BUFFER),
+                       TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT, n, TINYGLTF_TYPE_VEC4);
+    }
+    prim.attributes["WEIGHTS_0"] =
+        add_accessor(add_view(weights.data(), weights.size(), TINYGLTF_TARGET_ARRAY_BUFFER),
+                     TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, n, TINYGLTF_TYPE_VEC4, {}, {}, true);
+  }
+
+  tinygltf::Primitive add_part(const MeshPart& part, int material, const WindRig& rig) {
     tinygltf::Primitive prim;
     prim.mode = TINYGLTF_MODE_TRIANGLES;
     prim.material = material;
@@ -97,10 +132,82 @@ class ModelBuilder : public GltfBufferBuilder {
     prim.attributes["NORMAL"] = add_float_attribute(y_up(part.normals), 3, TINYGLTF_TYPE_VEC3);
     prim.attributes["TEXCOORD_0"] = add_float_attribute(part.uvs, 2, TINYGLTF_TYPE_VEC2);
     prim.attributes["_WIND"] = add_float_attribute(part.wind, 4, TINYGLTF_TYPE_VEC4);
+    if (!rig.empty()) add_skin_attributes(prim, part, rig);
     prim.indices = add_indices(part.indices, part.vertex_count());
     return prim;
   }
 };
+
+// Keys per period of the wind clip: enough for a smooth sine at two swings per period.
+constexpr int kWindKeys = 32;
+
+// The wind skin: joint nodes (the root joints, which carry the local origin, are scene roots
+// beside the tree's node: Godot 3.2's importer hangs on a skinned mesh whose node is its
+// joints' parent), one skin shared by every level's node, and the looping animation "wind" of
+// the joints' rotations (wind_rig.h). Joints rest without rotation, so each turns about its
+// axis as given. Returns the root joints.
+std::vector<int> add_wind(ModelBuilder& b, const WindRig& rig, const Vec3& origin, int levels) {
+  auto& model = b.model();
+  std::vector<int> roots;
+  const int first = int(model.nodes.size());
+  std::vector<float> inverse_bind;
+  tinygltf::Skin skin;
+  skin.name = "wind";
+  for (std::size_t j = 0; j < rig.joints.size(); ++j) {
+    const WindJoint& w = rig.joints[j];
+    tinygltf::Node node;
+    node.name = "wind_joint_" + std::to_string(j);
+    const Vec3 t = w.parent == kNoJoint ? z_up_to_y_up(origin + w.position)
+                                        : z_up_to_y_up(w.position - rig.joints[w.parent].position);
+    if (t != Vec3{}) node.translation = {t.x, t.y, t.z};
+    model.nodes.push_back(node);
+    if (w.parent == kNoJoint) {
+      roots.push_back(first + int(j));
+    } else {
+      model.nodes[first + w.parent].children.push_back(first + int(j));
+    }
+    skin.joints.push_back(first + int(j));
+    // The inverse of the joint's rest transform in the mesh's own frame (the root joints'
+    // origin is outside it): joint * inverse bind = the origin's translation at rest.
+    const Vec3f p(z_up_to_y_up(w.position));
+    const float m[16] = {1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, -p.x, -p.y, -p.z, 1};
+    inverse_bind.insert(inverse_bind.end(), m, m + 16);
+  }
+  skin.inverseBindMatrices =
+      b.add_floats(inverse_bind.data(), rig.joints.size(), 16, TINYGLTF_TYPE_MAT4, 0, false);
+  model.skins.push_back(skin);
+  model.nodes[0].skin = 0;
+  for (int k = 1; k < levels; ++k) model.nodes[k].skin = 0;
+
+  std::vector<float> times;
+  for (int i = 0; i <= kWindKeys; ++i) times.push_back(float(rig.period * i / kWindKeys));
+  const int input = b.add_floats(times.data(), times.size(), 1, TINYGLTF_TYPE_SCALAR, 0, true);
+  tinygltf::Animation anim;
+  anim.name = "wind";
+  for (std::size_t j = 0; j < rig.joints.size(); ++j) {
+    const WindJoint& w = rig.joints[j];
+    if (w.amplitude == 0) continue;
+    std::vector<float> q;
+    for (int i = 0; i <= kWindKeys; ++i) {
+      const double half = 0.5 * rig.angle(j, rig.period * i / kWindKeys);
+      const Vec3 a = w.axis * std::sin(half);
+      const auto r = z_up_to_y_up_quaternion(a.x, a.y, a.z, std::cos(half));
+      q.insert(q.end(), {float(r[0]), float(r[1]), float(r[2]), float(r[3])});
+    }
+    tinygltf::AnimationSampler sampler;
+    sampler.input = input;
+    sampler.output = b.add_floats(q.data(), times.size(), 4, TINYGLTF_TYPE_VEC4, 0, false);
+    sampler.interpolation = "LINEAR";
+    anim.samplers.push_back(sampler);
+    tinygltf::AnimationChannel channel;
+    channel.sampler = int(anim.samplers.size() - 1);
+    channel.target_node = first + int(j);
+    channel.target_path = "rotation";
+    anim.channels.push_back(channel);
+  }
+  if (!anim.channels.empty()) model.animations.push_back(anim);
+  return roots;
+}
 
 void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
   bool any_bark = false, any_leaves = false;
@@ -113,11 +220,12 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
   const int leaf = any_leaves ? b.add_material("leaf", true) : -1;
   auto& model = b.model();
   const std::string tree = lods.front().name.substr(0, lods.front().name.rfind("_LOD"));
+  const WindRig& rig = lods.front().wind_rig;
   for (const TreeMesh& m : lods) {
     tinygltf::Mesh mesh;
     mesh.name = m.name;
-    if (!m.bark.empty()) mesh.primitives.push_back(b.add_part(m.bark, bark));
-    if (!m.leaves.empty()) mesh.primitives.push_back(b.add_part(m.leaves, leaf));
+    if (!m.bark.empty()) mesh.primitives.push_back(b.add_part(m.bark, bark, rig));
+    if (!m.leaves.empty()) mesh.primitives.push_back(b.add_part(m.leaves, leaf, rig));
     if (mesh.primitives.empty()) throw MeshError("level of detail " + m.name + " has no geometry");
     model.meshes.push_back(std::move(mesh));
   }
@@ -128,7 +236,9 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
   tinygltf::Node root;
   root.name = tree;
   root.mesh = 0;
-  place_node(root, lods.front().origin);
+  // A skinned mesh's node transform does not apply (glTF 3.7.3.3): with the wind skin the local
+  // origin moves to the root joints.
+  if (rig.empty()) place_node(root, lods.front().origin);
   model.nodes.push_back(root);
   if (lods.size() > 1) {
     tinygltf::Value::Array ids, coverage;
@@ -138,7 +248,7 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
       tinygltf::Node level;
       level.name = lods[k].name;
       level.mesh = int(k);
-      place_node(level, lods[k].origin);
+      if (rig.empty()) place_node(level, lods[k].origin);
       model.nodes.push_back(level);
       ids.emplace_back(int(k));
     }
@@ -149,9 +259,12 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
     model.nodes[0].extras = tinygltf::Value(std::move(extras));
     model.extensionsUsed.push_back("MSFT_lod");
   }
+  const std::vector<int> joint_roots =
+      rig.empty() ? std::vector<int>{} : add_wind(b, rig, lods.front().origin, int(lods.size()));
   tinygltf::Scene scene;
   scene.name = tree;
   scene.nodes = {0};
+  scene.nodes.insert(scene.nodes.end(), joint_roots.begin(), joint_roots.end());
   model.scenes.push_back(scene);
   model.defaultScene = 0;
   if (model.buffers[0].data.size() > 0xfffffff0ull) {
@@ -162,7 +275,8 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
 
 }  // namespace
 
-GltfBytes encode_gltf(const std::vector<TreeMesh>& lods, bool binary, const std::string& bin_uri) {
+GltfBytes encode_gltf(const std::vector<TreeMesh>& lods, bool binary, const std::string& bin_uri,
+                      GltfCompression compression) {
   if (lods.empty()) throw MeshError("nothing to write: no meshes");
   ModelBuilder b;
   build_model(lods, b);
@@ -172,6 +286,19 @@ GltfBytes encode_gltf(const std::vector<TreeMesh>& lods, bool binary, const std:
   tinygltf::TinyGLTF gltf;
   if (!gltf.WriteGltfSceneToStream(&b.model(), glb, false, true)) {
     throw MeshError("glTF serialization failed");
+  }
+  if (compression != GltfCompression::kNone) {
+    try {
+      out.main = compress_glb(glb.str(), compression);
+    } catch (const std::runtime_error& e) {
+      throw MeshError(e.what());
+    }
+    if (binary) return out;
+    out.bin = glb_bin(out.main);
+    std::optional<std::string> json = gltf_json_with_buffer_uri(out.main, bin_uri);
+    if (!json) throw MeshError("glTF serialization produced no buffer");
+    out.main = std::move(*json);
+    return out;
   }
   if (binary) {
     out.main = glb.str();
@@ -184,9 +311,10 @@ GltfBytes encode_gltf(const std::vector<TreeMesh>& lods, bool binary, const std:
   return out;
 }
 
-void write_gltf(const std::vector<TreeMesh>& lods, const std::string& path) {
+void write_gltf(const std::vector<TreeMesh>& lods, const std::string& path,
+                GltfCompression compression) {
   const bool written = write_gltf_files(path, [&](bool binary, const std::string& bin_uri) {
-    return encode_gltf(lods, binary, bin_uri);
+    return encode_gltf(lods, binary, bin_uri, compression);
   });
   if (!written) throw MeshError("a glTF file name must end in .glb or .gltf: " + path);
 }

@@ -21,7 +21,7 @@ void card_axes(const OrganAnchor& o, Vec3& h, Vec3& l, Vec3& u) {
 
 // One two-faced card spanned by `across` (width axis) and `h` (length axis).
 void add_card(MeshPart& out, const Vec3& origin, const Vec3& h, const Vec3& across, double len,
-              double width, const WindField& wind, float branch, float phase) {
+              double width, const WindField& wind, float branch, float phase, std::uint32_t node) {
   const Vec3 normal = normalized(cross(h, across));
   for (int face = 0; face < 2; ++face) {
     const std::uint32_t b = std::uint32_t(out.positions.size());
@@ -33,6 +33,7 @@ void add_card(MeshPart& out, const Vec3& origin, const Vec3& h, const Vec3& acro
       out.normals.push_back(Vec3f(n));
       out.uvs.push_back({float(u), float(v)});
       out.wind.push_back({wind.main_bend(pos.z), branch, phase, float(v)});
+      out.skin_node.push_back(node);
     }
     // Corners 0 (u0,v0) 1 (u1,v0) 2 (u0,v1) 3 (u1,v1): (0,2,3) winds about h x across.
     if (face == 0) {
@@ -60,9 +61,11 @@ bool add_organ_cards(const Skeleton& s, const PreparedSkeleton& p, std::size_t i
     if (c != kNoChain) phase = wind.chain_phase[c];
   }
   const double width = len * options.leaf_aspect;
-  add_card(out, o.position, h, l, len, width, wind, branch, phase);
+  // A leaf on no node (kNoParent, a free organ) stays where it is (wind_rig.h).
+  const std::uint32_t node = o.node;
+  add_card(out, o.position, h, l, len, width, wind, branch, phase, node);
   if (options.leaf_style == LeafStyle::kCrossed) {
-    add_card(out, o.position, h, u, len, width, wind, branch, phase);
+    add_card(out, o.position, h, u, len, width, wind, branch, phase, node);
   }
   return true;
 }

@@ -24,6 +24,9 @@ void check_options(const MeshOptions& o, int lod) {
   if (!(std::isfinite(o.leaf_scale) && o.leaf_scale > 0)) bad("leaf scale must be > 0");
   if (!(std::isfinite(o.leaf_aspect) && o.leaf_aspect > 0)) bad("leaf aspect must be > 0");
   if (o.lod_count < 1 || o.lod_count > 8) bad("LOD count must be 1..8");
+  if (o.wind && o.wind_rig.max_joints < 2) bad("the wind skin needs at least 2 joints");
+  if (o.wind && !(o.wind_rig.period >= 2 && std::isfinite(o.wind_rig.period)))
+    bad("the wind period must be at least 2 s");
   if (lod < 0 || lod > 7) bad("LOD index must be 0..7");
 }
 
@@ -112,6 +115,7 @@ TreeMesh build_tree_mesh(const Skeleton& s, const MeshOptions& options, int lod,
   const WindField wind = make_wind_field(at_origin, p);
   TreeMesh mesh = build_level(at_origin, p, wind, options, lod, r);
   mesh.origin = origin;
+  if (options.wind) mesh.wind_rig = make_wind_rig(at_origin, p, wind, options.wind_rig);
   return mesh;
 }
 
@@ -126,9 +130,12 @@ std::vector<TreeMesh> build_tree_lods(const Skeleton& s, const MeshOptions& opti
   const PreparedSkeleton p = prepare_skeleton(at_origin, options, r);
   const WindField wind = make_wind_field(at_origin, p);
   std::vector<TreeMesh> lods;
+  WindRig rig;
+  if (options.wind) rig = make_wind_rig(at_origin, p, wind, options.wind_rig);
   for (int k = 0; k < options.lod_count; ++k) {
     lods.push_back(build_level(at_origin, p, wind, options, k, r));
     lods.back().origin = origin;
+    lods.back().wind_rig = rig;
   }
   return lods;
 }

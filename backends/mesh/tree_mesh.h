@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "backends/mesh/wind_rig.h"
 #include "core/skeleton.h"
 #include "core/vec3.h"
 
@@ -29,6 +30,10 @@ struct MeshPart {
   // trunk), z phase in [0,1) (per branch, so branches do not sway in unison), w flutter (leaves
   // only: 0 at the petiole, 1 at the leaf tip).
   std::vector<std::array<float, 4>> wind;
+  // The skeleton node whose motion each vertex follows: a ring's node for bark, the organ's node
+  // for leaves (kNoParent for an organ on no node). The wind skin (wind_rig.h) binds vertices to
+  // joints through it.
+  std::vector<std::uint32_t> skin_node;
   std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from outside
 
   std::size_t vertex_count() const { return positions.size(); }
@@ -46,6 +51,9 @@ struct TreeMesh {
   // a local origin for georeferenced ones (backends/mesh/local_origin.h). World position of a
   // vertex = origin + vertex; writers record it.
   Vec3 origin;
+  // The joints and animation of the wind skin (MeshOptions::wind); empty otherwise. Every level
+  // of a tree carries the same rig.
+  WindRig wind_rig;
   std::size_t triangle_count() const { return bark.triangle_count() + leaves.triangle_count(); }
 };
 
@@ -68,6 +76,8 @@ struct MeshOptions {
   double leaf_scale = 1.0;   // leaf length = anchor size * leaf_scale
   double leaf_aspect = 0.5;  // width / length
   int lod_count = 1;         // meshes LOD0 .. LOD(lod_count-1)
+  bool wind = false;         // also build the wind skin (TreeMesh::wind_rig, `--wind`)
+  WindRigOptions wind_rig;
 };
 
 // What meshing had to repair; the CLI prints these as warnings.

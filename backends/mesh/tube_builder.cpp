@@ -72,6 +72,7 @@ void add_cap(MeshPart& out, std::uint32_t ring, int n, const Vec3& center, const
   out.normals.push_back(to_f(normal));
   out.uvs.push_back({0.5f, 0.5f});
   out.wind.push_back(wind);
+  out.skin_node.push_back(out.skin_node[ring]);
   for (int j = 0; j < n; ++j) {
     const double a = 2 * std::numbers::pi * j / n;
     const Vec3f q = out.positions[ring + j];  // the same floats: welds exactly to the ring
@@ -80,6 +81,7 @@ void add_cap(MeshPart& out, std::uint32_t ring, int n, const Vec3& center, const
     out.normals.push_back(to_f(normal));
     out.uvs.push_back({float(0.5 + 0.5 * std::cos(a)), float(0.5 + 0.5 * std::sin(a))});
     out.wind.push_back(w);
+    out.skin_node.push_back(out.skin_node[ring + j]);
   }
   for (int j = 0; j < n; ++j) {
     const std::uint32_t a = c + 1 + j, b = c + 1 + (j + 1) % n;
@@ -156,6 +158,7 @@ bool add_chain_tube(const Skeleton& s, const PreparedSkeleton& p, std::uint32_t 
       out.normals.push_back(to_f(normalized(radial - t[i] * slope, radial)));
       out.uvs.push_back({float(j) / float(n), float(v)});
       out.wind.push_back({wind.main_bend(out.positions.back().z), branch, phase, 0.0f});
+      out.skin_node.push_back(pl.node[i]);
     }
   }
   const std::uint32_t stride = std::uint32_t(n + 1);

@@ -80,6 +80,26 @@ TEST_CASE("written glTF files pass the Khronos validator with no errors or warni
   geo_options.lod_count = 3;
   write_gltf(build_tree_lods(geo, geo_options), (dir / "geo.glb").string());
   files.push_back(dir / "geo.glb");
+  // The wind skin and its animation, alone and compressed (Draco, meshopt), as .glb and .gltf;
+  // also on the georeferenced tree, whose root joints then carry the local origin.
+  MeshOptions wind_options;
+  wind_options.wind = true;
+  wind_options.lod_count = 3;
+  const auto windy = build_tree_lods(testing::synthetic_tree(14, 600), wind_options);
+  for (const auto& [name, how] :
+       {std::pair{"wind", GltfCompression::kNone}, std::pair{"draco", GltfCompression::kDraco},
+        std::pair{"meshopt", GltfCompression::kMeshopt}}) {
+    for (const char* ext : {".glb", ".gltf"}) {
+      const fs::path f = dir / (std::string(name) + ext);
+      write_gltf(windy, f.string(), how);
+      files.push_back(f);
+    }
+  }
+  write_gltf(build_tree_lods(geo, wind_options), (dir / "geo_wind.glb").string());
+  files.push_back(dir / "geo_wind.glb");
+  write_gltf(tree(15, 800, 2, LeafStyle::kCrossed), (dir / "plain_draco.glb").string(),
+             GltfCompression::kDraco);
+  files.push_back(dir / "plain_draco.glb");
   std::string out;
   const int code = validate(files, out);
   INFO(out);

@@ -4,12 +4,20 @@
 // once and prints one JSON line per file:
 //   {"file", "skinnedMeshes", "bones", "skins", "meshes", "instancedMeshes", "instances",
 //    "drawCalls", "triangles", "drawnPixels", "pixels", "minX", "minY", "minZ", "maxX", "maxY",
-//    "maxZ"}
+//    "maxZ", "rootX", "rootY", "rootZ", "footY", "loadMs", "animations", "period", "tipMove",
+//    "baseMove"}
 // skinnedMeshes counts THREE.SkinnedMesh objects, bones the distinct THREE.Bone objects,
 // skins the distinct skeletons, instances the sum of InstancedMesh counts; drawCalls and
 // triangles come from renderer.info after one render; drawnPixels are the pixels of the
 // 256 x 256 picture whose colour differs from the background; min/max are the world bounds of
 // what is drawn, in three.js's y-up frame (glTF's), so a test can see which way is up.
+// root* is the world position of the scene's first node (a georeferenced tree's offset), footY
+// the lowest drawn point within 1 % of the height of it (the trunk's foot, when it is there).
+// Draco and meshopt files load through three's DRACOLoader and MeshoptDecoder; loadMs is the
+// time GLTFLoader took (fetch, decode, build). A file with animations plays its first clip:
+// period is its duration, tipMove the largest displacement between time 0 and a quarter period
+// of a drawn vertex in the top tenth of the tree, baseMove the same within 3 % of the height of
+// the trunk's foot (the skin's first joint, else the lowest vertex).
 // The files are served from a localhost HTTP server; the browser gets a fresh profile. With
 // RAMUS_THREE_SCREENSHOTS=1 the picture of each file is kept as FILE.three.png.
 //   node load_in_three.js FILE.glb...
@@ -18,29 +26,13 @@
 'use strict';
 const fs = require('fs');
 const http = require('http');
-const os = require('os');
 const path = require('path');
+const { tools, launch, cannotRun } = require('./chromium.js');
 
-const tools = path.join(__dirname, '..', '..', '..', 'tools', 'node_modules');
-const CHROMIUM = process.env.RAMUS_CHROMIUM || '/usr/bin/chromium';
-
-function cannotRun(why) {
-  console.error(`chromium cannot run: ${why}`);
-  process.exit(77);
-}
-
-let chromium;
-try {
-  ({ chromium } = require(path.join(tools, 'playwright-core')));
-} catch (e) {
-  console.error('playwright-core is not installed: run scripts/install-deps.sh (npm install in tools/)');
-  process.exit(2);
-}
 if (!fs.existsSync(path.join(tools, 'three', 'build', 'three.module.js'))) {
   console.error('three is not installed: run scripts/install-deps.sh (npm install in tools/)');
   process.exit(2);
 }
-if (!fs.existsSync(CHROMIUM)) cannotRun(`${CHROMIUM} does not exist (Debian package chromium)`);
 
 const files = process.argv.slice(2);
 if (files.length === 0) {
@@ -54,8 +46,63 @@ const PAGE = `<!doctype html><html><head><meta charset="utf-8">
 <script type="module">
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/addons/loaders/GLTFLoader.js';
+import { DRACOLoader } from 'three/addons/loaders/DRACOLoader.js';
+import { MeshoptDecoder } from 'three/addons/libs/meshopt_decoder.module.js';
+const draco = new DRACOLoader().setDecoderPath('/three/examples/jsm/libs/draco/gltf/');
+// The drawn vertices of every mesh (skinned ones posed), in world space.
+function drawnVertices(scene) {
+  const out = [];
+  const v = new THREE.Vector3();
+  scene.updateMatrixWorld(true);
+  scene.traverse((o) => {
+    if (!o.isMesh || o.isInstancedMesh) return;
+    if (o.isSkinnedMesh) o.skeleton.update();
+    const pos = o.geometry.attributes.position;
+    for (let i = 0; i < pos.count; i++) {
+      if (o.isSkinnedMesh) o.getVertexPosition(i, v); else v.fromBufferAttribute(pos, i);
+      v.applyMatrix4(o.matrixWorld);
+      out.push(v.x, v.y, v.z);
+    }
+  });
+  return out;
+}
+// Plays the first clip: how far the top and the base of the tree move by a quarter period.
+function sampleWind(gltf, box) {
+  const clip = gltf.animations[0];
+  const mixer = new THREE.AnimationMixer(gltf.scene);
+  mixer.clipAction(clip).play();
+  mixer.setTime(0);
+  const rest = drawnVertices(gltf.scene);
+  mixer.setTime(clip.duration / 4);
+  const moved = drawnVertices(gltf.scene);
+  mixer.setTime(0);
+  gltf.scene.updateMatrixWorld(true);
+  const h = box.max.y - box.min.y;
+  // The trunk's foot: the first joint of the skin (ramus puts it there), else the lowest vertex;
+  // its base the vertices within 3 % of the height of it.
+  let foot = null;
+  gltf.scene.traverse((o) => {
+    if (!foot && o.isSkinnedMesh) foot = o.skeleton.bones[0].getWorldPosition(new THREE.Vector3());
+  });
+  if (!foot) {
+    let low = 0;
+    for (let i = 0; i < rest.length; i += 3) if (rest[i + 1] < rest[low + 1]) low = i;
+    foot = new THREE.Vector3(rest[low], rest[low + 1], rest[low + 2]);
+  }
+  let tip = 0, base = 0;
+  for (let i = 0; i < rest.length; i += 3) {
+    const d = Math.hypot(moved[i] - rest[i], moved[i + 1] - rest[i + 1], moved[i + 2] - rest[i + 2]);
+    if (rest[i + 1] >= box.min.y + 0.9 * h) tip = Math.max(tip, d);
+    const near = Math.hypot(rest[i] - foot.x, rest[i + 1] - foot.y, rest[i + 2] - foot.z);
+    if (near <= 0.03 * h) base = Math.max(base, d);
+  }
+  return { period: clip.duration, tipMove: tip, baseMove: base };
+}
 window.loadAndRender = async (url) => {
-  const gltf = await new GLTFLoader().loadAsync(url);
+  const start = performance.now();
+  const gltf = await new GLTFLoader().setDRACOLoader(draco).setMeshoptDecoder(MeshoptDecoder)
+    .loadAsync(url);
+  const loadMs = performance.now() - start;
   const scene = new THREE.Scene();
   const background = new THREE.Color(0x000000);
   scene.background = background;
@@ -137,7 +184,20 @@ window.loadAndRender = async (url) => {
     instancedMeshes: instanced, instances, drawCalls: renderer.info.render.calls,
     triangles: renderer.info.render.triangles, drawnPixels: drawn, pixels: size * size,
     minX: box.min.x, minY: box.min.y, minZ: box.min.z, maxX: box.max.x, maxY: box.max.y,
-    maxZ: box.max.z };
+    maxZ: box.max.z, loadMs, animations: gltf.animations.length };
+  // The root node's world position (a georeferenced tree's offset) and the lowest drawn point
+  // within 1 % of the height of it (the trunk's foot, for a tree grown from the origin).
+  const root = gltf.scene.children[0].getWorldPosition(new THREE.Vector3());
+  const all = instanced ? [] : drawnVertices(gltf.scene);
+  let footY = Infinity;
+  for (let i = 0; i < all.length; i += 3) {
+    if (Math.hypot(all[i] - root.x, all[i + 1] - root.y, all[i + 2] - root.z) <=
+        0.01 * (box.max.y - box.min.y))
+      footY = Math.min(footY, all[i + 1]);
+  }
+  Object.assign(result, { rootX: root.x, rootY: root.y, rootZ: root.z,
+    footY: Number.isFinite(footY) ? footY : null });
+  if (gltf.animations.length) Object.assign(result, sampleWind(gltf, box));
   if (window.screenshotWanted) result.png = canvas.toDataURL('image/png');
   renderer.dispose();
   canvas.remove();
@@ -148,7 +208,11 @@ window.pageReady = true;
 
 function serve() {
   const roots = { '/three/': path.join(tools, 'three') + '/' };
-  const served = new Map(files.map((f, i) => [`/files/${i}${path.extname(f)}`, f]));
+  // /files/I/NAME is NAME in the folder of file I, so a .gltf finds its .bin beside it.
+  const served = (url) => {
+    const m = /^\/files\/(\d+)\/([^/]+)$/.exec(url);
+    return m && files[Number(m[1])] ? path.join(path.dirname(files[Number(m[1])]), m[2]) : null;
+  };
   const server = http.createServer((req, res) => {
     const url = decodeURIComponent(req.url.split('?')[0]);
     let file = null;
@@ -157,7 +221,7 @@ function serve() {
       res.end(PAGE);
       return;
     }
-    if (served.has(url)) file = served.get(url);
+    if (url.startsWith('/files/')) file = served(url);
     for (const [prefix, dir] of Object.entries(roots)) {
       if (url.startsWith(prefix) && !url.includes('..')) file = dir + url.slice(prefix.length);
     }
@@ -182,22 +246,13 @@ function serve() {
   }
   const server = await serve();
   const port = server.address().port;
-  const profile = fs.mkdtempSync(path.join(os.tmpdir(), 'ramus-chromium-'));
-  let context;
+  let browser;
   try {
-    context = await chromium.launchPersistentContext(profile, {
-      executablePath: CHROMIUM,
-      headless: true,
-      timeout: 60000,
-      args: ['--headless', '--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run',
-        '--disable-background-networking', '--disable-component-update', '--disable-sync',
-        '--use-gl=angle', '--use-angle=swiftshader', '--enable-unsafe-swiftshader'],
-    });
-  } catch (e) {
-    server.close();
-    fs.rmSync(profile, { recursive: true, force: true });
-    cannotRun(String(e.message || e).split('\n')[0]);
+    browser = await launch();
+  } finally {
+    if (!browser) server.close();
   }
+  const { context } = browser;
   let status = 0;
   try {
     const page = await context.newPage();
@@ -209,7 +264,7 @@ function serve() {
     if (!webgl) cannotRun('no WebGL 2 context in headless Chromium');
     for (let i = 0; i < files.length; i++) {
       try {
-        const url = `/files/${i}${path.extname(files[i])}`;
+        const url = `/files/${i}/${encodeURIComponent(path.basename(files[i]))}`;
         if (process.env.RAMUS_THREE_SCREENSHOTS) await page.evaluate(() => { window.screenshotWanted = true; });
         const r = await page.evaluate((u) => window.loadAndRender(u), url);
         if (r.png) {
@@ -228,9 +283,8 @@ function serve() {
       status = 1;
     }
   } finally {
-    await context.close();
+    await browser.close();
     server.close();
-    fs.rmSync(profile, { recursive: true, force: true });
   }
   process.exit(status);
 })().catch((e) => {
