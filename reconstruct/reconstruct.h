@@ -70,6 +70,10 @@ struct ReconstructOptions {
   double min_cylinder_radius = 0;   // cylinders are at least this thick when overlaps are
                                     // measured (zig-zags across thin branches); auto: 2 voxels
 
+  // Centre lines (docs/reconstruction.md): after 4.3, every node moves to the axis of a robust
+  // circle fitted to its cross-section, where the fit is good, and takes the fitted radius.
+  bool centre_lines = true;
+
   // Leaves (4.3, fine geometry synthesis).
   bool leaves = true;
   int min_leaves = 20, max_leaves = 50;

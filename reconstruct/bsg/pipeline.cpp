@@ -5,9 +5,9 @@
 #include <chrono>
 #include <cmath>
 
-#include "reconstruct/reconstruct.h"
 #include "reconstruct/bsg/axis_projection.h"
 #include "reconstruct/bsg/bases.h"
+#include "reconstruct/bsg/centre_line.h"
 #include "reconstruct/bsg/finite_points.h"
 #include "reconstruct/bsg/forest.h"
 #include "reconstruct/bsg/graph.h"
@@ -15,6 +15,7 @@
 #include "reconstruct/bsg/kdtree.h"
 #include "reconstruct/bsg/output.h"
 #include "reconstruct/bsg/refine.h"
+#include "reconstruct/reconstruct.h"
 #include "reconstruct/wood/reconstruct_wood.h"
 
 namespace ramus {
@@ -89,6 +90,23 @@ std::vector<Bsg> refined_trees(const Graph& g, const Forest& f,
     refine(trees[t], own);
   });
   return trees;
+}
+
+// Centre lines (docs/reconstruction.md): nodes onto the fitted axes of the wood, radii from the
+// same fits; then the clustering of 4.3 once more with those radii, because chains that ran
+// along opposite sides of a thick stem now lie on one axis.
+void centre_tree(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
+                 const std::vector<std::uint32_t>& counts, const InflateParams& ip, double voxel) {
+  CentreLineParams cp;
+  cp.spacing = voxel;
+  const std::vector<double> weight(counts.begin(), counts.end());
+  const CentreLineResult fit = centre_line(b.pos, b.parent, b.radius, samples, weight, cp);
+  if (fit.fitted_count == 0) return;
+  smooth_fitted_radii(b.parent, fit, b.radius);
+  for (int round = 0; round < 10; ++round) {
+    if (collapse_overlaps(b, ip.overlap, ip.min_radius, ip.tolerance) == 0) break;
+  }
+  prune_twigs(b, ip.min_twig);
 }
 
 }  // namespace
@@ -229,6 +247,7 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
     tp.root_radius =
         trunk_radius(samples[k], graph.pos[roots[k]], 0.5 * bp.slab, 2 * root_reach[k]);
     inflate(trees[k], samples[k], counts[k], tp);
+    if (o.centre_lines) centre_tree(trees[k], samples[k], counts[k], tp, scale.voxel);
     LeafParams lp{o.leaves,     o.min_leaves,
                   o.max_leaves, o.leaf_sphere > 0 ? o.leaf_sphere : 2 * scale.voxel,
                   o.seed,       k};

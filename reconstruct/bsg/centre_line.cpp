@@ -1,0 +1,222 @@
+#include "reconstruct/bsg/centre_line.h"
+
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+#include "reconstruct/bsg/bsg.h"
+#include "reconstruct/bsg/circle_fit.h"
+#include "reconstruct/bsg/kdtree.h"
+
+namespace ramus::bsg {
+
+namespace {
+
+struct SlabFit {
+  bool ok = false;
+  Eigen::Vector3d axis_point;
+  double radius = 0;
+};
+
+// The local branch direction at v: from two nodes up to two nodes down the heaviest child (the
+// child with the largest subtree), which smooths the zig-zags of single edges.
+Eigen::Vector3d direction_at(std::uint32_t v, const std::vector<Eigen::Vector3d>& pos,
+                             const std::vector<std::uint32_t>& parent,
+                             const std::vector<std::uint32_t>& main_child,
+                             const std::vector<std::uint8_t>& fork) {
+  std::uint32_t a = v, b = v;
+  for (int k = 0; k < 2; ++k) {
+    if (parent[a] != kNone) a = parent[a];
+    // At a fork the way out may be a limb as heavy as the stem; the way in is the stem.
+    if (main_child[b] != kNone && (!fork[v] || a == v)) b = main_child[b];
+  }
+  Eigen::Vector3d d = pos[b] - pos[a];
+  if (!(d.norm() > 0)) return Eigen::Vector3d::UnitZ();
+  return d.normalized();
+}
+
+// Fits the cross-section at `x` (direction d). The search disc grows when the circle reaches
+// beyond it: a node on the bark of a stem thicker than its radius hint sees only part of it.
+SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint,
+                 const PointIndex& index, const std::vector<Eigen::Vector3d>& samples,
+                 const std::vector<double>& weight, const CentreLineParams& p, double noise) {
+  SlabFit out;
+  const Eigen::Vector3d helper =
+      std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d e1 = d.cross(helper).normalized(), e2 = d.cross(e1);
+  double r0 = std::max(hint, 2 * p.spacing);
+  std::vector<std::uint32_t> near;
+  std::vector<Eigen::Vector2d> pts;
+  std::vector<double> w;
+  for (int attempt = 0; attempt < 3; ++attempt) {
+    const double reach = std::max(2.5 * r0, 5 * p.spacing);
+    const double half = std::max(0.3 * r0, 1.5 * p.spacing);
+    near.clear();
+    index.within(x, std::sqrt(reach * reach + half * half), near);
+    std::sort(near.begin(), near.end());  // thread-count independent order
+    pts.clear(), w.clear();
+    for (std::uint32_t i : near) {
+      const Eigen::Vector3d q = samples[i] - x;
+      if (std::abs(q.dot(d)) > half) continue;
+      const Eigen::Vector2d uv(q.dot(e1), q.dot(e2));
+      if (uv.squaredNorm() > reach * reach) continue;
+      pts.push_back(uv);
+      w.push_back(weight.empty() ? 1.0 : weight[i]);
+    }
+    if (pts.size() < 8) return out;
+    if (int(pts.size()) > p.max_slab_points) {
+      const std::size_t stride = (pts.size() + p.max_slab_points - 1) / p.max_slab_points;
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < pts.size(); i += stride) pts[k] = pts[i], w[k] = w[i], ++k;
+      pts.resize(k), w.resize(k);
+    }
+    const CircleFit f = fit_circle(pts, w, noise);
+    if (!f.valid) return out;
+    const double extent = f.centre.norm() + f.radius;
+    // A radius far above the hint is a flat arc (a scan's edge, a wall of twigs), not a stem.
+    if (f.radius > p.max_hint_factor * std::max(hint, 2 * p.spacing)) return out;
+    if (extent > 0.9 * reach && attempt < 2) {
+      r0 = std::min(2 * r0, 1.3 * std::max(f.radius, f.centre.norm()));
+      continue;
+    }
+    const bool good = f.coverage >= p.min_coverage && f.inlier_fraction >= p.min_inliers &&
+                      f.residual <= p.max_residual * f.radius + noise && f.radius >= p.spacing &&
+                      extent <= reach && f.centre.norm() <= 1.25 * f.radius + 2 * p.spacing;
+    if (!good) return out;
+    out.ok = true;
+    out.axis_point = x + f.centre.x() * e1 + f.centre.y() * e2;
+    out.radius = f.radius;
+    return out;
+  }
+  return out;
+}
+
+// Nodes in parent-first order, and each node's child with the largest subtree.
+void tree_order(const std::vector<std::uint32_t>& parent, std::vector<std::uint32_t>& order,
+                std::vector<std::uint32_t>& main_child) {
+  const std::size_t n = parent.size();
+  std::vector<std::vector<std::uint32_t>> ch(n);
+  order.clear();
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (parent[v] == kNone || parent[v] >= n) {
+      order.push_back(v);
+    } else {
+      ch[parent[v]].push_back(v);
+    }
+  }
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    for (std::uint32_t c : ch[order[i]]) order.push_back(c);
+  }
+  std::vector<std::size_t> size(n, 1);
+  for (std::size_t i = order.size(); i-- > 0;) {
+    const std::uint32_t v = order[i];
+    if (parent[v] != kNone && parent[v] < n) size[parent[v]] += size[v];
+  }
+  main_child.assign(n, kNone);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    for (std::uint32_t c : ch[v]) {
+      if (main_child[v] == kNone || size[c] > size[main_child[v]]) main_child[v] = c;
+    }
+  }
+}
+
+}  // namespace
+
+CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
+                             const std::vector<std::uint32_t>& parent,
+                             const std::vector<double>& radius,
+                             const std::vector<Eigen::Vector3d>& samples,
+                             const std::vector<double>& sample_weight, const CentreLineParams& p) {
+  const std::size_t n = pos.size();
+  CentreLineResult res;
+  res.fitted.assign(n, 0);
+  res.radius.assign(n, 0.0);
+  if (n == 0 || samples.size() < 8 || !(p.spacing > 0)) return res;
+  std::vector<std::uint32_t> order, main_child;
+  tree_order(parent, order, main_child);
+  const PointIndex index(samples);
+  std::vector<std::uint8_t> fork(n, 0);
+  {
+    std::vector<int> children(n, 0);
+    for (std::uint32_t v = 0; v < n; ++v) {
+      if (parent[v] < n) ++children[parent[v]];
+    }
+    for (std::uint32_t v = 0; v < n; ++v) fork[v] = children[v] > 1;
+  }
+  const double noise = p.noise > 0 ? p.noise : 0.5 * p.spacing;
+  const std::vector<Eigen::Vector3d> original = pos;
+  std::vector<SlabFit> fits(n);
+  for (int pass = 0; pass < std::max(1, p.passes); ++pass) {
+    // Every node is fitted from the positions of the previous pass (Jacobi: the result does not
+    // depend on the order or the thread count).
+    const std::vector<Eigen::Vector3d> from = pass == 0 ? original : pos;
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t v) {
+      const double hint = pass == 0 || !fits[v].ok ? radius[v] : fits[v].radius;
+      const Eigen::Vector3d d = direction_at(std::uint32_t(v), from, parent, main_child, fork);
+      fits[v] = fit_slab(from[v], d, hint, index, samples, sample_weight, p, noise);
+    });
+    // Plausibility along the branches, parents first: no thickening outwards.
+    std::vector<double> ancestor(n, 0.0);  // radius of the nearest accepted ancestor (0: none)
+    for (std::uint32_t v : order) {
+      const std::uint32_t u = parent[v] < n ? parent[v] : kNone;
+      const double ra = u == kNone ? 0.0 : (fits[u].ok ? fits[u].radius : ancestor[u]);
+      if (fits[v].ok && ra > 0 && fits[v].radius > p.max_growth * ra + p.spacing)
+        fits[v].ok = false;
+      ancestor[v] = ra;
+    }
+    for (std::size_t v = 0; v < n; ++v) pos[v] = fits[v].ok ? fits[v].axis_point : original[v];
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    res.fitted[v] = fits[v].ok;
+    res.radius[v] = fits[v].ok ? fits[v].radius : 0.0;
+    res.fitted_count += fits[v].ok;
+  }
+  return res;
+}
+
+void smooth_fitted_radii(const std::vector<std::uint32_t>& parent, const CentreLineResult& fit,
+                         std::vector<double>& radius) {
+  const std::size_t n = parent.size();
+  std::vector<std::vector<double>> near(n);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (!fit.fitted[v]) continue;
+    near[v].push_back(fit.radius[v]);
+    const std::uint32_t u = parent[v];
+    if (u < n && fit.fitted[u]) near[v].push_back(fit.radius[u]), near[u].push_back(fit.radius[v]);
+  }
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (!fit.fitted[v]) continue;
+    auto& a = near[v];
+    std::sort(a.begin(), a.end());
+    radius[v] = a.size() % 2 ? a[a.size() / 2] : 0.5 * (a[a.size() / 2 - 1] + a[a.size() / 2]);
+  }
+}
+
+std::size_t centre_skeleton(Skeleton& s, const std::vector<Eigen::Vector3d>& points,
+                            const CentreLineParams& params) {
+  std::vector<Eigen::Vector3d> pos;
+  std::vector<std::uint32_t> parent;
+  std::vector<double> radius;
+  for (const SkeletonNode& node : s.nodes) {
+    pos.emplace_back(node.position.x, node.position.y, node.position.z);
+    parent.push_back(node.parent == kNoParent ? kNone : node.parent);
+    radius.push_back(node.radius);
+  }
+  const CentreLineResult fit = centre_line(pos, parent, radius, points, {}, params);
+  smooth_fitted_radii(parent, fit, radius);
+  std::vector<Vec3> shift(s.size());
+  for (std::size_t v = 0; v < s.size(); ++v) {
+    const Vec3 moved{pos[v].x(), pos[v].y(), pos[v].z()};
+    shift[v] = moved - s.nodes[v].position;
+    s.nodes[v].position = moved;
+    s.nodes[v].radius = radius[v];
+  }
+  for (OrganAnchor& o : s.organs) {
+    if (o.node < s.size()) o.position = o.position + shift[o.node];
+  }
+  return fit.fitted_count;
+}
+
+}  // namespace ramus::bsg

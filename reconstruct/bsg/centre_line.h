@@ -1,0 +1,66 @@
+// Centre lines: every skeleton node moved onto the axis of the wood around it, and its radius
+// measured there. The shortest paths of the BSG (Livny et al. 2010, 4.1) and the flood fill run
+// along the scanned surface of thick stems, so without this step a trunk's skeleton sits up to
+// its radius away from the true axis (issue 19). The cross-section of a node is the slab of
+// points perpendicular to the local branch direction; a robust circle fit in the slab's plane
+// (circle_fit.h, as TreeQSM and AdTree fit cylinders) gives the axis point and the radius, which
+// replace the node's position and radius where the fit is good. Elsewhere (too few points, an arc
+// too short, a radius implausible against the branch's) the node stays and keeps the radius the
+// caller gave it (Livny 4.3's allometric one). The topology is never changed.
+// docs/reconstruction.md, "Centre lines".
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "core/skeleton.h"
+
+namespace ramus::bsg {
+
+struct CentreLineParams {
+  double spacing = 0;  // point spacing of the samples (the voxel): floors every length below
+  double noise = 0;    // floor of a fit's residual scale; 0: half the spacing
+  // A fit is accepted when the inliers cover at least this arc (a one-sided scan sees about
+  // 180 degrees of a stem, less at grazing angles) ...
+  double min_coverage = 1.9;  // radians, ~110 degrees
+  // ... their residual scale is at most this fraction of the radius (plus the noise floor) ...
+  double max_residual = 0.2;
+  double min_inliers = 0.5;  // ... at least this share of the slab's points are inliers ...
+  // ... and the radius is at most this factor above the nearest fitted ancestor's (a branch does
+  // not thicken outwards; a slab that cuts its parent's stem near a fork does).
+  double max_growth = 1.3;
+  // ... and at most this factor above the radius hint (allometric radii are off by 2-3 x; a
+  // nearly straight arc fits any huge circle).
+  double max_hint_factor = 4.0;
+  int passes = 2;             // refits from the moved nodes (better directions, centred balls)
+  int max_slab_points = 600;  // slabs with more points are thinned evenly before the fit
+};
+
+struct CentreLineResult {
+  std::vector<std::uint8_t> fitted;  // per node: moved onto a fitted axis
+  std::vector<double> radius;        // per node: the fitted radius (0 where not fitted)
+  std::size_t fitted_count = 0;
+};
+
+// Moves pos[v] onto the fitted axes (parent[v] = kNone for roots; any order). `radius` holds
+// the current radii, the hint for the size of the cross-sections. `samples` are the points,
+// `sample_weight` how many input points each stands for (empty: 1 each).
+CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
+                             const std::vector<std::uint32_t>& parent,
+                             const std::vector<double>& radius,
+                             const std::vector<Eigen::Vector3d>& samples,
+                             const std::vector<double>& sample_weight,
+                             const CentreLineParams& params);
+
+// Radii after centre_line: fitted nodes take the median of the fitted radii of themselves, their
+// parent and their children (one noisy slab does not make a bulge); the others keep theirs.
+void smooth_fitted_radii(const std::vector<std::uint32_t>& parent, const CentreLineResult& fit,
+                         std::vector<double>& radius);
+
+// The same on finished skeletons (the flood fill's), against the cloud's points in world
+// coordinates. Returns the number of nodes moved.
+std::size_t centre_skeleton(Skeleton& skeleton, const std::vector<Eigen::Vector3d>& points,
+                            const CentreLineParams& params);
+
+}  // namespace ramus::bsg
