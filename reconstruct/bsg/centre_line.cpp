@@ -50,12 +50,12 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
   std::vector<std::uint32_t> near;
   std::vector<Eigen::Vector2d> pts;
   std::vector<double> w;
-  for (int attempt = 0; attempt < 3; ++attempt) {
+  double thicken = 1;  // a sparse slab (a thin branch far from the scanner) is taken thicker once
+  for (int attempt = 0; attempt < 4; ++attempt) {
     const double reach = std::max(2.5 * r0, 5 * p.spacing);
-    const double half = std::max(0.3 * r0, 1.5 * p.spacing);
+    const double half = thicken * std::max(0.3 * r0, 1.5 * p.spacing);
     near.clear();
     index.within(x, std::sqrt(reach * reach + half * half), near);
-    std::sort(near.begin(), near.end());  // thread-count independent order
     pts.clear(), w.clear();
     for (std::uint32_t i : near) {
       const Eigen::Vector3d q = samples[i] - x;
@@ -64,6 +64,10 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
       if (uv.squaredNorm() > reach * reach) continue;
       pts.push_back(uv);
       w.push_back(weight.empty() ? 1.0 : weight[i]);
+    }
+    if (pts.size() < 8 && thicken == 1 && pts.size() >= 3) {
+      thicken = 2;
+      continue;
     }
     if (pts.size() < 8) return out;
     if (int(pts.size()) > p.max_slab_points) {
@@ -77,13 +81,13 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
     const double extent = f.centre.norm() + f.radius;
     // A radius far above the hint is a flat arc (a scan's edge, a wall of twigs), not a stem.
     if (f.radius > p.max_hint_factor * std::max(hint, 2 * p.spacing)) return out;
-    if (extent > 0.9 * reach && attempt < 2) {
+    if (extent > 0.9 * reach && attempt < 3) {
       r0 = std::min(2 * r0, 1.3 * std::max(f.radius, f.centre.norm()));
       continue;
     }
     const bool good = f.coverage >= p.min_coverage && f.inlier_fraction >= p.min_inliers &&
                       f.residual <= p.max_residual * f.radius + noise && f.radius >= p.spacing &&
-                      extent <= reach && f.centre.norm() <= 1.25 * f.radius + 2 * p.spacing;
+                      extent <= reach && f.centre.norm() <= p.max_shift * f.radius + 2 * p.spacing;
     if (!good) return out;
     out.ok = true;
     out.axis_point = x + f.centre.x() * e1 + f.centre.y() * e2;
@@ -145,7 +149,7 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
     }
     for (std::uint32_t v = 0; v < n; ++v) fork[v] = children[v] > 1;
   }
-  const double noise = p.noise > 0 ? p.noise : 0.5 * p.spacing;
+  const double noise = p.noise > 0 ? p.noise : 0.25 * p.spacing;
   const std::vector<Eigen::Vector3d> original = pos;
   std::vector<SlabFit> fits(n);
   for (int pass = 0; pass < std::max(1, p.passes); ++pass) {
@@ -153,7 +157,10 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
     // depend on the order or the thread count).
     const std::vector<Eigen::Vector3d> from = pass == 0 ? original : pos;
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t v) {
-      const double hint = pass == 0 || !fits[v].ok ? radius[v] : fits[v].radius;
+      // Twigs thinner than the spacing cannot be fitted (and the axis projection has already
+      // centred them); a second pass refits only what the first one fitted.
+      if (pass == 0 ? radius[v] < p.min_hint_spacings * p.spacing : !fits[v].ok) return;
+      const double hint = pass == 0 ? radius[v] : fits[v].radius;
       const Eigen::Vector3d d = direction_at(std::uint32_t(v), from, parent, main_child, fork);
       fits[v] = fit_slab(from[v], d, hint, index, samples, sample_weight, p, noise);
     });
@@ -167,6 +174,17 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
       ancestor[v] = ra;
     }
     for (std::size_t v = 0; v < n; ++v) pos[v] = fits[v].ok ? fits[v].axis_point : original[v];
+    // A fork whose slab could not be fitted (it cuts the stem and its branches at once) lies on
+    // the stem's axis: the line through the two fitted nodes below it, when it is near that line.
+    for (std::uint32_t v : order) {
+      if (!fork[v] || fits[v].ok) continue;
+      const std::uint32_t u = parent[v];
+      if (u >= n || !fits[u].ok || parent[u] >= n || !fits[parent[u]].ok) continue;
+      const Eigen::Vector3d a = pos[parent[u]], d = pos[u] - a;
+      if (!(d.squaredNorm() > 0)) continue;
+      const Eigen::Vector3d on = a + d * ((original[v] - a).dot(d) / d.squaredNorm());
+      if ((on - original[v]).norm() <= 1.5 * fits[u].radius + p.spacing) pos[v] = on;
+    }
   }
   for (std::size_t v = 0; v < n; ++v) {
     res.fitted[v] = fits[v].ok;
@@ -174,6 +192,40 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
     res.fitted_count += fits[v].ok;
   }
   return res;
+}
+
+void subdivide_long_edges(Bsg& b, double spacing, double min_radius, double edge_radii,
+                          double edge_spacings) {
+  if (b.size() < 2) return;
+  Bsg out;
+  std::vector<std::uint32_t> local(b.size(), kNone);
+  auto push = [&](const Eigen::Vector3d& pos, std::uint32_t parent, std::uint32_t vertex,
+                  double weight, double radius, double mass) {
+    out.pos.push_back(pos), out.parent.push_back(parent), out.vertex.push_back(vertex);
+    out.weight.push_back(weight), out.radius.push_back(radius), out.mass.push_back(mass);
+    return std::uint32_t(out.pos.size() - 1);
+  };
+  for (std::uint32_t v = 0; v < b.size(); ++v) {
+    std::uint32_t up = b.parent[v] == kNone ? kNone : local[b.parent[v]];
+    double mass = b.mass[v];
+    if (up != kNone) {
+      const std::uint32_t u = b.parent[v];
+      // Only branches thick enough to be fitted (CentreLineParams::min_hint_spacings).
+      const double limit = std::max(edge_radii * b.radius[v], edge_spacings * spacing);
+      const int parts = b.radius[v] < min_radius
+                            ? 1
+                            : int(std::min(64.0, std::ceil((b.pos[v] - b.pos[u]).norm() / limit)));
+      // The edge's points are shared among its parts (collapses weight positions by mass).
+      mass = b.mass[v] / std::max(parts, 1);
+      for (int k = 1; k < parts; ++k) {
+        const double t = double(k) / parts;
+        up = push(b.pos[u] + t * (b.pos[v] - b.pos[u]), up, kNone, b.weight[v],
+                  b.radius[u] + t * (b.radius[v] - b.radius[u]), mass);
+      }
+    }
+    local[v] = push(b.pos[v], up, b.vertex[v], b.weight[v], b.radius[v], mass);
+  }
+  b = std::move(out);
 }
 
 void smooth_fitted_radii(const std::vector<std::uint32_t>& parent, const CentreLineResult& fit,

@@ -15,12 +15,13 @@
 #include <vector>
 
 #include "core/skeleton.h"
+#include "reconstruct/bsg/bsg.h"
 
 namespace ramus::bsg {
 
 struct CentreLineParams {
   double spacing = 0;  // point spacing of the samples (the voxel): floors every length below
-  double noise = 0;    // floor of a fit's residual scale; 0: half the spacing
+  double noise = 0;    // floor of a fit's residual scale; 0: a quarter of the spacing
   // A fit is accepted when the inliers cover at least this arc (a one-sided scan sees about
   // 180 degrees of a stem, less at grazing angles) ...
   double min_coverage = 1.9;  // radians, ~110 degrees
@@ -33,8 +34,14 @@ struct CentreLineParams {
   // ... and at most this factor above the radius hint (allometric radii are off by 2-3 x; a
   // nearly straight arc fits any huge circle).
   double max_hint_factor = 4.0;
+  // Nodes whose radius hint is below this many spacings are not fitted (twigs: a circle needs
+  // points around it, and the BSG's axis projection has centred them already).
+  double min_hint_spacings = 0.5;
+  // A node moves at most this many fitted radii (plus two spacings): it lies on the bark or
+  // near it, and a farther circle is another branch's.
+  double max_shift = 1.75;
   int passes = 2;             // refits from the moved nodes (better directions, centred balls)
-  int max_slab_points = 600;  // slabs with more points are thinned evenly before the fit
+  int max_slab_points = 300;  // slabs with more points are thinned evenly before the fit
 };
 
 struct CentreLineResult {
@@ -52,6 +59,13 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
                              const std::vector<Eigen::Vector3d>& samples,
                              const std::vector<double>& sample_weight,
                              const CentreLineParams& params);
+
+// Splits every edge of radius >= min_radius longer than max(edge_radii x its radius,
+// edge_spacings x spacing) into equal parts (new degree-2 vertices without a graph vertex), so
+// that long collapsed edges, which cut the corners of curved stems, get cross-sections of their
+// own. Parents stay before children.
+void subdivide_long_edges(Bsg& bsg, double spacing, double min_radius, double edge_radii = 2.0,
+                          double edge_spacings = 4.0);
 
 // Radii after centre_line: fitted nodes take the median of the fitted radii of themselves, their
 // parent and their children (one noisy slab does not make a bulge); the others keep theirs.

@@ -4,28 +4,23 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/rng.h"
+
 namespace ramus::bsg {
 
 namespace {
 
 double weight_of(const std::vector<double>& w, std::size_t i) { return w.empty() ? 1.0 : w[i]; }
 
-// 1.4826 x the weighted median of |e|: the standard deviation of Gaussian residuals.
-double robust_scale(const std::vector<double>& e, const std::vector<double>& w) {
-  std::vector<std::pair<double, double>> a;
-  a.reserve(e.size());
-  double total = 0;
-  for (std::size_t i = 0; i < e.size(); ++i) {
-    a.emplace_back(std::abs(e[i]), weight_of(w, i));
-    total += weight_of(w, i);
-  }
-  std::sort(a.begin(), a.end());
-  double acc = 0;
-  for (const auto& [v, wt] : a) {
-    acc += wt;
-    if (acc >= 0.5 * total) return 1.4826 * v;
-  }
-  return a.empty() ? 0.0 : 1.4826 * a.back().first;
+// 1.4826 x the median of |e|: the standard deviation of Gaussian residuals. (Unweighted: the
+// weights are point counts of near-uniform voxels, and nth_element keeps the fits cheap.)
+double robust_scale(const std::vector<double>& e, const std::vector<double>&) {
+  if (e.empty()) return 0.0;
+  std::vector<double> a(e.size());
+  for (std::size_t i = 0; i < e.size(); ++i) a[i] = std::abs(e[i]);
+  const auto mid = a.begin() + std::ptrdiff_t(a.size() / 2);
+  std::nth_element(a.begin(), mid, a.end());
+  return 1.4826 * *mid;
 }
 
 // 2 pi minus the widest angular gap between the given points seen from the centre.
@@ -40,6 +35,33 @@ double arc_coverage(const std::vector<Eigen::Vector2d>& pts, const std::vector<c
   double gap = ang.front() + 2 * M_PI - ang.back();
   for (std::size_t i = 1; i < ang.size(); ++i) gap = std::max(gap, ang[i] - ang[i - 1]);
   return 2 * M_PI - gap;
+}
+
+// The circle through three points (invalid when they are nearly collinear).
+CircleFit circle_through(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                         const Eigen::Vector2d& c) {
+  CircleFit f;
+  const Eigen::Vector2d ab = b - a, ac = c - a;
+  const double d = 2 * (ab.x() * ac.y() - ab.y() * ac.x());
+  if (!(std::abs(d) > 1e-12 * (ab.squaredNorm() + ac.squaredNorm()))) return f;
+  const Eigen::Vector2d u((ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm()) / d,
+                          (ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm()) / d);
+  f.centre = a + u;
+  f.radius = u.norm();
+  f.valid = std::isfinite(f.radius);
+  return f;
+}
+
+// Consensus of a candidate: the weight of the points within tau of it, each counted with a
+// truncated quadratic so that the tighter of two circles wins.
+double consensus(const std::vector<Eigen::Vector2d>& pts, const std::vector<double>& w,
+                 const CircleFit& f, double tau) {
+  double score = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double e = ((pts[i] - f.centre).norm() - f.radius) / tau;
+    if (std::abs(e) < 1) score += weight_of(w, i) * (1 - e * e);
+  }
+  return score;
 }
 
 }  // namespace
@@ -86,15 +108,55 @@ CircleFit taubin_circle(const std::vector<Eigen::Vector2d>& pts,
 
 CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<double>& weights,
                      double noise, int iterations) {
-  CircleFit f = taubin_circle(pts, weights);
-  if (!f.valid) return f;
+  // Starts: Taubin's circle through all points, through the half nearest the slab's origin (the
+  // node, which lies on or in the branch it stands for), and through random triples (RANSAC,
+  // Fischler & Bolles 1981): a slab that also cuts a second branch has more than one circle,
+  // and an algebraic fit to both lies between them. The start most points agree with wins.
   const std::size_t n = pts.size();
+  CircleFit f = taubin_circle(pts, weights);
+  if (n < 3) return f;
+  const double tau = 2.5 * std::max(noise, 1e-12);
+  std::vector<CircleFit> starts{f};
+  {
+    std::vector<std::size_t> idx(n);
+    for (std::size_t i = 0; i < n; ++i) idx[i] = i;
+    std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
+      return pts[a].squaredNorm() < pts[b].squaredNorm();
+    });
+    std::vector<Eigen::Vector2d> near;
+    std::vector<double> near_w;
+    for (std::size_t k = 0; k < std::max<std::size_t>(3, n / 2); ++k) {
+      near.push_back(pts[idx[k]]);
+      if (!weights.empty()) near_w.push_back(weights[idx[k]]);
+    }
+    starts.push_back(taubin_circle(near, near_w));
+  }
+  Rng rng(0x51ab + n);
+  for (int k = 0; k < 16; ++k) {
+    const std::size_t a = rng.below(n), b = rng.below(n), c = rng.below(n);
+    if (a == b || b == c || a == c) continue;
+    starts.push_back(circle_through(pts[a], pts[b], pts[c]));
+  }
+  double best = -1;
+  for (const CircleFit& s : starts) {
+    if (!s.valid) continue;
+    const double score = consensus(pts, weights, s, tau);
+    if (score > best) best = score, f = s;
+  }
+  if (!f.valid) return f;
   std::vector<double> e(n), rw(n, 1.0);
   Eigen::Vector2d c = f.centre;
   double r = f.radius, scale = 0;
+  // The scale comes from the points near the current circle (within 4 tau), so the points of
+  // another branch do not inflate it and turn themselves into inliers.
+  std::vector<double> near_e, near_w;
   auto residuals = [&] {
-    for (std::size_t i = 0; i < n; ++i) e[i] = (pts[i] - c).norm() - r;
-    scale = std::max(robust_scale(e, weights), noise);
+    near_e.clear(), near_w.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      e[i] = (pts[i] - c).norm() - r;
+      if (std::abs(e[i]) < 4 * tau) near_e.push_back(e[i]), near_w.push_back(weight_of(weights, i));
+    }
+    scale = std::max(near_e.empty() ? tau : robust_scale(near_e, near_w), noise);
   };
   residuals();
   for (int it = 0; it < iterations; ++it) {

@@ -92,21 +92,16 @@ std::vector<Bsg> refined_trees(const Graph& g, const Forest& f,
   return trees;
 }
 
-// Centre lines (docs/reconstruction.md): nodes onto the fitted axes of the wood, radii from the
-// same fits; then the clustering of 4.3 once more with those radii, because chains that ran
-// along opposite sides of a thick stem now lie on one axis.
+// Centre lines (docs/reconstruction.md): long edges split so that curved stems get cross-sections
+// of their own, then nodes onto the fitted axes of the wood and radii from the same fits.
 void centre_tree(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
-                 const std::vector<std::uint32_t>& counts, const InflateParams& ip, double voxel) {
+                 const std::vector<std::uint32_t>& counts, double voxel) {
   CentreLineParams cp;
   cp.spacing = voxel;
+  subdivide_long_edges(b, voxel, cp.min_hint_spacings * voxel);
   const std::vector<double> weight(counts.begin(), counts.end());
   const CentreLineResult fit = centre_line(b.pos, b.parent, b.radius, samples, weight, cp);
-  if (fit.fitted_count == 0) return;
   smooth_fitted_radii(b.parent, fit, b.radius);
-  for (int round = 0; round < 10; ++round) {
-    if (collapse_overlaps(b, ip.overlap, ip.min_radius, ip.tolerance) == 0) break;
-  }
-  prune_twigs(b, ip.min_twig);
 }
 
 }  // namespace
@@ -247,7 +242,7 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
     tp.root_radius =
         trunk_radius(samples[k], graph.pos[roots[k]], 0.5 * bp.slab, 2 * root_reach[k]);
     inflate(trees[k], samples[k], counts[k], tp);
-    if (o.centre_lines) centre_tree(trees[k], samples[k], counts[k], tp, scale.voxel);
+    if (o.centre_lines) centre_tree(trees[k], samples[k], counts[k], scale.voxel);
     LeafParams lp{o.leaves,     o.min_leaves,
                   o.max_leaves, o.leaf_sphere > 0 ? o.leaf_sphere : 2 * scale.voxel,
                   o.seed,       k};
