@@ -228,6 +228,94 @@ void subdivide_long_edges(Bsg& b, double spacing, double min_radius, double edge
   b = std::move(out);
 }
 
+std::size_t drop_branches_inside_stems(Bsg& b, const std::vector<std::uint8_t>& fitted,
+                                       double spacing) {
+  const std::size_t n = b.size();
+  if (n < 3 || fitted.size() != n) return 0;
+  // Containers: the edges whose both ends were fitted, as cylinders of the larger radius.
+  std::vector<std::uint32_t> seg;  // child vertex of each container edge
+  std::vector<Eigen::Vector3d> mid;
+  double reach = 0;
+  for (std::uint32_t v = 0; v < n; ++v) {
+    const std::uint32_t u = b.parent[v];
+    if (u == kNone || !fitted[v] || !fitted[u]) continue;
+    seg.push_back(v);
+    mid.push_back(0.5 * (b.pos[u] + b.pos[v]));
+    const double r = std::max(b.radius[u], b.radius[v]);
+    reach = std::max(reach, 0.5 * (b.pos[v] - b.pos[u]).norm() + 1.5 * r + 3 * spacing);
+  }
+  if (seg.empty()) return 0;
+  const PointIndex index(mid);
+  std::vector<std::uint8_t> alive(n, 1);
+  std::vector<int> children(n, 0);
+  for (std::uint32_t v = 1; v < n; ++v) {
+    if (b.parent[v] != kNone) ++children[b.parent[v]];
+  }
+  std::vector<std::uint8_t> in_chain(n, 0);
+  std::vector<std::uint32_t> chain, near;
+  auto inside_other = [&](const Eigen::Vector3d& q) {
+    near.clear();
+    index.within(q, reach, near);
+    for (std::uint32_t k : near) {
+      const std::uint32_t v = seg[k], u = b.parent[v];
+      if (!alive[v] || in_chain[v]) continue;
+      const Eigen::Vector3d a = b.pos[u], ab = b.pos[v] - a;
+      const double l2 = ab.squaredNorm();
+      const double t = l2 > 0 ? std::clamp((q - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+      const double r = std::max(b.radius[u], b.radius[v]);
+      if ((q - a - t * ab).norm() <= 1.5 * r + 3 * spacing) return true;
+    }
+    return false;
+  };
+  std::size_t removed = 0;
+  for (int round = 0; round < 4; ++round) {
+    std::size_t this_round = 0;
+    // Leaf chains, from the tip down to the fork, tips in descending index order (removals take
+    // effect at once, so of two chains centred on one axis only one goes).
+    for (std::uint32_t tip = std::uint32_t(n); tip-- > 1;) {
+      if (!alive[tip] || children[tip] != 0) continue;
+      chain.clear();
+      for (std::uint32_t v = tip; v != kNone && b.parent[v] != kNone; v = b.parent[v]) {
+        chain.push_back(v);
+        if (children[b.parent[v]] != 1) break;
+      }
+      const std::uint32_t fork = b.parent[chain.back()];
+      if (fork == kNone || children[fork] < 2) continue;  // the trunk's own top
+      for (std::uint32_t v : chain) in_chain[v] = 1;
+      bool all_inside = true;
+      for (std::uint32_t v : chain) {
+        if (!inside_other(b.pos[v])) {
+          all_inside = false;
+          break;
+        }
+      }
+      for (std::uint32_t v : chain) in_chain[v] = 0;
+      if (!all_inside) continue;
+      for (std::uint32_t v : chain) alive[v] = 0;
+      --children[fork];
+      this_round += chain.size();
+    }
+    removed += this_round;
+    if (this_round == 0) break;
+  }
+  if (removed == 0) return 0;
+  // Whole leaf chains go, so the survivors' parents survive; indices keep their order.
+  Bsg out;
+  std::vector<std::uint32_t> local(n, kNone);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (!alive[v]) continue;
+    local[v] = std::uint32_t(out.pos.size());
+    out.pos.push_back(b.pos[v]);
+    out.parent.push_back(b.parent[v] == kNone ? kNone : local[b.parent[v]]);
+    out.vertex.push_back(b.vertex[v]);
+    out.weight.push_back(b.weight[v]);
+    out.radius.push_back(b.radius[v]);
+    out.mass.push_back(b.mass[v]);
+  }
+  b = std::move(out);
+  return removed;
+}
+
 void smooth_fitted_radii(const std::vector<std::uint32_t>& parent, const CentreLineResult& fit,
                          std::vector<double>& radius) {
   const std::size_t n = parent.size();

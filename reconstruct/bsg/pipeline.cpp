@@ -102,6 +102,7 @@ void centre_tree(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
   const std::vector<double> weight(counts.begin(), counts.end());
   const CentreLineResult fit = centre_line(b.pos, b.parent, b.radius, samples, weight, cp);
   smooth_fitted_radii(b.parent, fit, b.radius);
+  if (fit.fitted_count > 0) drop_branches_inside_stems(b, fit.fitted, voxel);
 }
 
 }  // namespace
