@@ -112,8 +112,8 @@ void accuracy(const std::string& path, const scanner::HarnessCase& base) {
         r.seconds, a.precision_1r, a.recall_1r, a.centre_error_median);
     for (const CentreError& e : a.centre_error) {
       if (e.samples == 0) continue;
-      std::printf(" [%.0f-%.0f cm: %.3f, p90 %.2f, n=%zu]", 100 * e.lo, 100 * e.hi, e.median, e.p90,
-                  e.samples);
+      std::printf(" [%.0f-%.0f cm: %.3f, found %.3f, p90 %.2f, n=%zu]", 100 * e.lo, 100 * e.hi,
+                  e.median, e.median_found, e.p90, e.samples);
     }
     std::printf("\n");
   }

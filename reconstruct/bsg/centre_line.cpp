@@ -46,7 +46,9 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
   const Eigen::Vector3d helper =
       std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
   const Eigen::Vector3d e1 = d.cross(helper).normalized(), e2 = d.cross(e1);
-  double r0 = std::max(hint, 2 * p.spacing);
+  // The first disc is at most 20 spacings wide (a generous hint would gather thousands of points
+  // for every node); it grows below when the circle reaches beyond it.
+  double r0 = std::clamp(hint, 2 * p.spacing, 20 * p.spacing);
   std::vector<std::uint32_t> near;
   std::vector<Eigen::Vector2d> pts;
   std::vector<double> w;

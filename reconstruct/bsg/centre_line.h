@@ -33,7 +33,7 @@ struct CentreLineParams {
   double max_growth = 1.3;
   // ... and at most this factor above the radius hint (allometric radii are off by 2-3 x; a
   // nearly straight arc fits any huge circle).
-  double max_hint_factor = 4.0;
+  double max_hint_factor = 6.0;
   // Nodes whose radius hint is below this many spacings are not fitted (twigs: a circle needs
   // points around it, and the BSG's axis projection has centred them already).
   double min_hint_spacings = 0.5;

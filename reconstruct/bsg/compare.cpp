@@ -126,6 +126,11 @@ void centre_errors(const std::vector<Skeleton>& truth, const std::vector<Skeleto
   }
   for (std::size_t k = 0; k < classes; ++k) {
     CentreError e;
+    std::vector<double> found;
+    for (double x : rel[k]) {
+      if (x <= 2) found.push_back(x);
+    }
+    e.median_found = quantile(found, 0.5);
     e.lo = o.radius_classes[k], e.hi = o.radius_classes[k + 1];
     e.samples = rel[k].size();
     e.median = quantile(rel[k], 0.5);

@@ -24,6 +24,9 @@ struct CentreError {
   double lo = 0, hi = 0;       // truth radii in [lo, hi)
   std::size_t samples = 0;     // truth samples in the class
   double median = 0, p90 = 0;  // of distance / radius
+  // The median over the samples the reconstruction found (within 2 x radius): how well the
+  // found branches are centred, apart from the branches missed (which recall counts).
+  double median_found = 0;
 };
 
 struct SkeletonComparison {

@@ -36,8 +36,9 @@ TEST_CASE("reconstruct accuracy: thick-branched synthetic tree, three stations, 
   CHECK(a.branches_reconstructed <= 2 * a.branches_truth);
 }
 
-// The same tree with the axis projection switched off: the parallel paths come back. This shows
-// that the projection, not another setting, is what keeps thick branches to one chain.
+// The same tree with the axis projection switched off (and the centre lines, which remove the
+// parallel chains inside fitted stems on their own: length 1.24 with them): the parallel paths
+// come back. This shows that the projection is what keeps thick branches to one chain.
 TEST_CASE("reconstruct accuracy: thick branches keep parallel paths without the axis projection",
           "[accuracy]") {
   const Skeleton truth = test::synthetic_tree(7, {0, 0, 0});
@@ -47,10 +48,15 @@ TEST_CASE("reconstruct accuracy: thick branches keep parallel paths without the 
   ReconstructOptions o;
   o.axis_levels = 0;
   o.contraction_steps = 10;
+  o.centre_lines = false;
   const scanner::HarnessResult r = scanner::run_harness(truth, c, o);
   INFO("length " << r.at_radius.length_ratio);
   REQUIRE(r.trees == 1);
   CHECK(r.at_radius.length_ratio > 1.5);
+  o.centre_lines = true;
+  const scanner::HarnessResult centred = scanner::run_harness(truth, c, o);
+  INFO("length with centre lines " << centred.at_radius.length_ratio);
+  CHECK(centred.at_radius.length_ratio < r.at_radius.length_ratio);
 }
 
 TEST_CASE("reconstruct accuracy: synthetic tree scanned from one station", "[accuracy]") {
