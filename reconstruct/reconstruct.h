@@ -92,6 +92,7 @@ struct ReconstructTimings {
 struct ReconstructCounts {
   std::size_t input_points = 0;
   std::size_t dropped_points = 0;  // non-finite coordinates
+  std::size_t outlier_points = 0;  // far outside the rest of the cloud (ignored)
   std::size_t terrain_points = 0;
   std::size_t graph_vertices = 0;
   std::size_t graph_edges = 0;

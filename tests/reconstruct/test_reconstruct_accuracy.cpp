@@ -138,3 +138,60 @@ TEST_CASE("reconstruct accuracy: bundled weeping grammar, one station, defaults"
   CHECK(a.length_ratio < 1.2);
   CHECK(a.precision_distance >= 0.9);
 }
+
+// Centre lines (issue 19): an 8 m tree with a 30 cm trunk and limbs of 5-20 cm, thick enough
+// that the shortest paths of the BSG run along the bark. Without centre lines (measured): median
+// centre-line error / radius 0.43 over the 2-40 cm classes, length 3.95 x the truth with 318 tips
+// for 25. With them: 0.056 / 0.019 / 0.121 / 0.003 in the classes 2-5 / 5-10 / 10-20 / 20-40 cm,
+// precision / recall within 2 x radius 1.000 / 0.992, length 1.46, 43 tips.
+namespace {
+
+void check_centre_classes(const SkeletonComparison& a, double lo, double bound, bool found) {
+  for (const CentreError& e : a.centre_error) {
+    if (e.lo < lo || e.samples < 100) continue;
+    INFO("radii " << e.lo << "-" << e.hi << ": median " << e.median << ", found " << e.median_found
+                  << ", n " << e.samples);
+    CHECK((found ? e.median_found : e.median) <= bound);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("reconstruct accuracy: thick tree, three stations: nodes on the axes", "[accuracy]") {
+  const Skeleton truth = test::thick_tree(5, 8.0, 0.3);
+  scanner::HarnessCase c;
+  c.stations = 3;
+  const scanner::HarnessResult r = scanner::run_harness(truth, c);
+  const SkeletonComparison& a = r.at_radius;
+  INFO("precision " << a.precision << " recall " << a.recall << " length " << a.length_ratio
+                    << " tips " << a.branches_reconstructed);
+  REQUIRE(r.trees == 1);
+  CHECK(a.precision >= 0.95);
+  CHECK(a.recall >= 0.9);
+  check_centre_classes(a, 0.05, 0.15, false);
+  CHECK(a.length_ratio < 1.7);
+  ReconstructOptions off;
+  off.centre_lines = false;
+  const scanner::HarnessResult b = scanner::run_harness(truth, c, off);
+  INFO("without centre lines: median " << b.at_radius.centre_error_median << ", length "
+                                       << b.at_radius.length_ratio);
+  CHECK(b.at_radius.centre_error_median > 2 * a.centre_error_median);
+}
+
+// One station sees half of every stem. Measured: precision / recall within 2 x radius 0.968 /
+// 0.802 (the occluded limbs are missing), median error / radius over the found samples 0.433 /
+// 0.135 / 0.066 in the classes 5-10 / 10-20 / 20-40 cm (0.60 / 0.28 / 0.066 over all samples).
+// The trunk meets the target; the limbs do not yet (docs/reconstruction.md, Centre lines).
+TEST_CASE("reconstruct accuracy: thick tree, one station: the trunk on its axis", "[accuracy]") {
+  const Skeleton truth = test::thick_tree(5, 8.0, 0.3);
+  scanner::HarnessCase c;
+  c.stations = 1;
+  const scanner::HarnessResult r = scanner::run_harness(truth, c);
+  const SkeletonComparison& a = r.at_radius;
+  INFO("precision " << a.precision << " recall " << a.recall);
+  REQUIRE(r.trees == 1);
+  CHECK(a.precision >= 0.95);
+  CHECK(a.recall >= 0.75);
+  check_centre_classes(a, 0.2, 0.15, false);
+  check_centre_classes(a, 0.1, 0.25, true);
+}
