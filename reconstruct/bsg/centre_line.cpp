@@ -265,7 +265,7 @@ std::size_t drop_branches_inside_stems(Bsg& b, const std::vector<std::uint8_t>& 
       const double l2 = ab.squaredNorm();
       const double t = l2 > 0 ? std::clamp((q - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
       const double r = std::max(b.radius[u], b.radius[v]);
-      if ((q - a - t * ab).norm() <= 1.5 * r + 3 * spacing) return true;
+      if ((q - a - t * ab).norm() <= 1.1 * r + 2 * spacing) return true;
     }
     return false;
   };

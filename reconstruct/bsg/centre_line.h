@@ -68,7 +68,7 @@ void subdivide_long_edges(Bsg& bsg, double spacing, double min_radius, double ed
                           double edge_spacings = 4.0);
 
 // Removes side branches that never leave a stem: leaf chains (tip back to the fork) whose every
-// node lies within 1.5 x the radius (plus three spacings) of an edge of another branch whose ends
+// node lies within 1.1 x the radius (plus two spacings) of an edge of another branch whose ends
 // were both fitted. These are the shortest paths that ran along the bark of a thick stem beside
 // the one that became its skeleton (issue 19: 3-9 x the true length on trees with 30-60 cm
 // trunks); once the stem is centred they lie inside it. Returns the number of vertices removed.
