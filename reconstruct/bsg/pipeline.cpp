@@ -228,10 +228,11 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
   ip.own_weight = own;
   ip.edge_sample = scale.voxel;
   ip.tolerance = 0.5 * scale.voxel;
-  // Ten voxels, but at least 2% of the height: with a voxel near the point spacing, ten voxels
-  // (15-20 cm) keep the spurs that bark noise grows on thin whips.
-  ip.min_twig = o.min_branch_length > 0 ? o.min_branch_length
-                                        : std::max(10 * scale.voxel, 0.02 * scale.height);
+  // Ten voxels (the point spacing sets what the scan supports, issue 19). The former floor of 2%
+  // of the height, there against the spurs bark noise grows on thin whips, also cut real twigs
+  // of 20-25 cm on a 13 m tree; since the centre lines take the spurs that lie along stems, the
+  // floor costs more recall (broadleaf, three stations: 0.872 against 0.911) than it saves.
+  ip.min_twig = o.min_branch_length > 0 ? o.min_branch_length : 10 * scale.voxel;
   ip.min_radius = o.min_cylinder_radius > 0 ? o.min_cylinder_radius : 2 * scale.voxel;
   const BaseParams bp = base_params(o, scale);
   std::vector<Skeleton> skeletons(roots.size());
