@@ -65,8 +65,7 @@ struct ReconstructOptions {
   // Inflation (4.3).
   double allometry_exponent = 2.5;  // r_parent^e / r_child^e = c_parent / c_child (Eq. 5)
   double overlap_fraction = 0.5;    // collapse an edge whose cylinder is covered more than this
-  double min_branch_length = 0;     // drop leaf twigs shorter than this; auto: 10 voxels,
-                                    // at least 2% of the height
+  double min_branch_length = 0;     // drop leaf twigs shorter than this; auto: 10 voxels
   double min_cylinder_radius = 0;   // cylinders are at least this thick when overlaps are
                                     // measured (zig-zags across thin branches); auto: 2 voxels
 
