@@ -328,11 +328,28 @@ void smooth_fitted_radii(const std::vector<std::uint32_t>& parent, const CentreL
     const std::uint32_t u = parent[v];
     if (u < n && fit.fitted[u]) near[v].push_back(fit.radius[u]), near[u].push_back(fit.radius[v]);
   }
+  const std::vector<double> prior = radius;  // the caller's (allometric) radii
   for (std::uint32_t v = 0; v < n; ++v) {
     if (!fit.fitted[v]) continue;
     auto& a = near[v];
     std::sort(a.begin(), a.end());
     radius[v] = a.size() % 2 ? a[a.size() / 2] : 0.5 * (a[a.size() / 2 - 1] + a[a.size() / 2]);
+  }
+  // Nodes without a fit below a fitted one keep the allometric shape, anchored on the nearest
+  // fitted ancestor's measured radius (never above it): otherwise a branch alternates between
+  // fitted and allometric radii, which may differ by 3 x, and its mesh looks knotted.
+  std::vector<std::uint32_t> order, main_child;
+  tree_order(parent, order, main_child);
+  std::vector<std::uint32_t> anchor(n, kNone);
+  for (std::uint32_t v : order) {
+    const std::uint32_t u = parent[v] < n ? parent[v] : kNone;
+    if (fit.fitted[v]) {
+      anchor[v] = v;
+      continue;
+    }
+    anchor[v] = u == kNone ? kNone : anchor[u];
+    const std::uint32_t a = anchor[v];
+    if (a != kNone && prior[a] > 0) radius[v] = radius[a] * std::min(1.0, prior[v] / prior[a]);
   }
 }
 
