@@ -17,6 +17,7 @@
 #include "formats/point_cloud_io.h"
 #include "reconstruct/flood/flood_skeleton.h"
 #include "reconstruct/merge/branch_merge.h"
+#include "tests/reconstruct/reconstruct_fixtures.h"
 #include "tests/support/harness.h"
 
 using namespace ramus;
@@ -45,24 +46,28 @@ void print_row(const char* method, const std::string& path, int stations, std::s
   std::printf(
       "%-6s %s stations=%d points=%zu trees=%zu nodes=%zu precision(2r)=%.3f "
       "recall(2r)=%.3f precision(1%%h)=%.3f recall(1%%h)=%.3f chamfer=%.4f length=%.3f "
-      "tips=%zu/%zu time=%.3fs\n",
+      "tips=%zu/%zu time=%.3fs centre/r=%.3f\n",
       method, path.c_str(), stations, points, r.trees.size(), r.counts.skeleton_nodes, a.precision,
       a.recall, a.precision_distance, a.recall_distance, a.chamfer, a.length_ratio,
-      a.branches_reconstructed, a.branches_truth, seconds);
+      a.branches_reconstructed, a.branches_truth, seconds, a.centre_error_median);
 }
 
 // The accuracy harness of tests/support/harness.h, run for both methods on the same scan.
 void accuracy(const std::string& path) {
-  const Skeleton truth = grow(path);
+  // "thick-small": the 8 m, 30 cm trunk tree of tests/reconstruct/reconstruct_fixtures.h.
+  const Skeleton truth = path == "thick-small" ? test::thick_tree(5, 8.0, 0.3) : grow(path);
   for (int stations : {1, 3}) {
     scanner::HarnessCase hc;
     hc.stations = stations;
-    for (const char* method : {"bsg", "flood"}) {
+    // flood-raw: the flood fill without centre lines.
+    for (const char* method : {"bsg", "flood", "flood-raw"}) {
       ReconstructResult last;
       const scanner::HarnessResult h =
           scanner::run_harness(truth, hc, [&](const PointCloud& cloud) {
+            flood::FloodOptions fo;
+            fo.centre_lines = std::strcmp(method, "flood-raw") != 0;
             last = std::strcmp(method, "bsg") == 0 ? reconstruct(cloud)
-                                                   : flood::flood_reconstruct(cloud);
+                                                   : flood::flood_reconstruct(cloud, fo);
             return last;
           });
       print_row(method, path, stations, h.points, last, h.at_radius, h.seconds);

@@ -72,6 +72,8 @@ void set_option(ReconstructOptions& o, const std::string& kv) {
     o.min_cylinder_radius = v;
   else if (k == "ground_band")
     o.ground_band = v;
+  else if (k == "centre_lines")
+    o.centre_lines = v != 0;
   else if (k == "terrain")
     o.remove_terrain = v != 0;
   else
@@ -83,8 +85,13 @@ std::vector<int> g_stations = {1, 3};  // --stations N: only N stations
 std::string g_dump;  // --dump PREFIX: writes PREFIX<tree>-<stations>.truth.json / .rec.json
 
 void accuracy(const std::string& path, const scanner::HarnessCase& base) {
-  // "synthetic": the thick-branched test tree of tests/reconstruct/reconstruct_fixtures.h.
-  const Skeleton t = path == "synthetic" ? test::synthetic_tree(7, {0, 0, 0}) : grow(path);
+  // "synthetic": the thick-branched test tree of tests/reconstruct/reconstruct_fixtures.h;
+  // "thick": its 14 m, 60 cm trunk variant (radii 5-60 cm), "thick-small" the 8 m, 30 cm one
+  // the tests scan.
+  const Skeleton t = path == "synthetic"     ? test::synthetic_tree(7, {0, 0, 0})
+                     : path == "thick"       ? test::thick_tree(11, 14.0, 0.6)
+                     : path == "thick-small" ? test::thick_tree(5, 8.0, 0.3)
+                                             : grow(path);
   for (int stations : g_stations) {
     scanner::HarnessCase c = base;
     c.stations = stations;
@@ -99,10 +106,16 @@ void accuracy(const std::string& path, const scanner::HarnessCase& base) {
     std::printf(
         "%s stations=%d points=%zu trees=%zu precision(2r)=%.3f recall(2r)=%.3f "
         "precision(1%%h)=%.3f recall(1%%h)=%.3f chamfer=%.4f length=%.3f "
-        "tips=%zu/%zu time=%.2fs\n",
+        "tips=%zu/%zu time=%.2fs\n  precision(1r)=%.3f recall(1r)=%.3f centre/r median=%.3f",
         path.c_str(), stations, r.points, r.trees, a.precision, a.recall, a.precision_distance,
         a.recall_distance, a.chamfer, a.length_ratio, a.branches_reconstructed, a.branches_truth,
-        r.seconds);
+        r.seconds, a.precision_1r, a.recall_1r, a.centre_error_median);
+    for (const CentreError& e : a.centre_error) {
+      if (e.samples == 0) continue;
+      std::printf(" [%.0f-%.0f cm: %.3f, found %.3f, p90 %.2f, n=%zu]", 100 * e.lo, 100 * e.hi,
+                  e.median, e.median_found, e.p90, e.samples);
+    }
+    std::printf("\n");
   }
 }
 

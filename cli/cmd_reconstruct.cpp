@@ -151,8 +151,9 @@ void add_reconstruct(CLI::App& app, const GlobalOptions& global, std::function<i
   sub->add_flag("--no-leaves", args->no_leaves, "do not synthesize leaves at the branch tips");
   sub->add_option("--leaves-in-scan", args->leaves_in_scan,
                   "foliage in the scan: keep every point (default), remove it first (wood/leaf "
-                  "separation), or auto: remove it when at least 25% of the points look like "
-                  "leaves")
+                  "separation), or auto: remove it only when the separation finds a foliage mode "
+                  "holding at least 25% of the points in a scan fine enough to resolve leaves "
+                  "(the note gives the evidence)")
       ->check(CLI::IsMember({"auto", "keep", "remove"}));
   sub->add_option("--seed", args->seed, "seed of the synthesized leaves");
   add_up_option(sub, args->up);

@@ -65,10 +65,13 @@ struct ReconstructOptions {
   // Inflation (4.3).
   double allometry_exponent = 2.5;  // r_parent^e / r_child^e = c_parent / c_child (Eq. 5)
   double overlap_fraction = 0.5;    // collapse an edge whose cylinder is covered more than this
-  double min_branch_length = 0;     // drop leaf twigs shorter than this; auto: 10 voxels,
-                                    // at least 2% of the height
+  double min_branch_length = 0;     // drop leaf twigs shorter than this; auto: 10 voxels
   double min_cylinder_radius = 0;   // cylinders are at least this thick when overlaps are
                                     // measured (zig-zags across thin branches); auto: 2 voxels
+
+  // Centre lines (docs/reconstruction.md): after 4.3, every node moves to the axis of a robust
+  // circle fitted to its cross-section, where the fit is good, and takes the fitted radius.
+  bool centre_lines = true;
 
   // Leaves (4.3, fine geometry synthesis).
   bool leaves = true;
@@ -88,6 +91,7 @@ struct ReconstructTimings {
 struct ReconstructCounts {
   std::size_t input_points = 0;
   std::size_t dropped_points = 0;  // non-finite coordinates
+  std::size_t outlier_points = 0;  // far outside the rest of the cloud (ignored)
   std::size_t terrain_points = 0;
   std::size_t graph_vertices = 0;
   std::size_t graph_edges = 0;

@@ -1,5 +1,6 @@
 #include "reconstruct/bsg/bases.h"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -162,6 +163,28 @@ std::vector<Footprint> footprints(const Grid2& g, const std::vector<double>& cou
   return out;
 }
 
+// Whether a footprint is a long thin line (a fence, the foot of a wall): its cells' principal
+// extent exceeds `max_width` and the cross extent is under a tenth of it. Principal axes, not
+// the bounding box, so that a fence at 45 degrees is a line too.
+bool is_line(const Grid2& g, const Footprint& f, double max_width) {
+  if (f.cells.size() < 3) return false;
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  std::vector<Eigen::Vector2d> xy;
+  for (int c : f.cells) {
+    xy.emplace_back(g.x0 + (c % g.nx + 0.5) * g.cell, g.y0 + (c / g.nx + 0.5) * g.cell);
+    mean += xy.back();
+  }
+  mean /= double(xy.size());
+  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
+  for (const auto& q : xy) cov += (q - mean) * (q - mean).transpose();
+  cov /= double(xy.size());
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+  const double major = std::sqrt(std::max(eig.eigenvalues()(1), 0.0));
+  const double minor = std::sqrt(std::max(eig.eigenvalues()(0), 0.0));
+  // A uniform segment of length L has a standard deviation of L / sqrt(12).
+  return std::sqrt(12.0) * major > max_width && minor < 0.1 * major;
+}
+
 }  // namespace
 
 Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std::uint8_t>& keep,
@@ -216,6 +239,14 @@ Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std:
                    [](const auto& a, const auto& b) { return a.n > b.n; });
   std::size_t too_wide = 0;
   const std::vector<LowPoint> lows = low_points(lowest, fine);
+  // The same footprints down to single points: a sparse fence breaks into small dense pieces
+  // that each look like a trunk, but together they are one long line.
+  const std::vector<Footprint> loose = footprints(fine, count, zmin, 1.0);
+  std::vector<int> loose_of(count.size(), -1);
+  for (std::size_t k = 0; k < loose.size(); ++k) {
+    for (int c : loose[k].cells) loose_of[std::size_t(c)] = int(k);
+  }
+  std::vector<std::int8_t> loose_line(loose.size(), -1);  // -1: not measured yet
   double strongest = 0;
   for (const Footprint& cl : found) {
     const double width = std::max(cl.x1 - cl.x0, cl.y1 - cl.y0) + fine.cell;
@@ -226,6 +257,12 @@ Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std:
     // A trunk's footprint is round (a half ring from one side); a piece of wall is a line.
     const double thickness = std::min(cl.x1 - cl.x0, cl.y1 - cl.y0) + fine.cell;
     if (width > p.max_trunk_width || (width > 4 * fine.cell && thickness < 0.3 * width)) {
+      ++too_wide;
+      continue;
+    }
+    const int lk = loose_of[std::size_t(cl.cells.front())];
+    if (lk >= 0 && loose_line[lk] < 0) loose_line[lk] = is_line(fine, loose[lk], p.max_trunk_width);
+    if (lk >= 0 && loose_line[lk] == 1) {
       ++too_wide;
       continue;
     }

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <memory>
 
 #include "reconstruct/bsg/kdtree.h"
 
@@ -40,7 +42,7 @@ Samples sample(const std::vector<Skeleton>& skeletons, double spacing) {
 }
 
 struct Match {
-  double within_radius = 0, within_distance = 0, mean_distance = 0;
+  double within_radius = 0, within_radius_1 = 0, within_distance = 0, mean_distance = 0;
 };
 
 // For each sample of `from`, the nearest sample of `to`; radii come from the truth side.
@@ -54,12 +56,88 @@ Match match(const Samples& from, const Samples& to, bool from_is_truth, const Co
     const double d = std::sqrt(d2);
     const double r = std::max(from_is_truth ? from.radius[i] : to.radius[j], o.min_radius);
     m.within_radius += d <= o.radius_factor * r;
+    m.within_radius_1 += d <= r;
     m.within_distance += d <= o.distance;
     m.mean_distance += d;
   }
   const double n = double(from.pos.size());
-  m.within_radius /= n, m.within_distance /= n, m.mean_distance /= n;
+  m.within_radius /= n, m.within_radius_1 /= n, m.within_distance /= n, m.mean_distance /= n;
   return m;
+}
+
+double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                              const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double l2 = ab.squaredNorm();
+  const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+  return (p - a - t * ab).norm();
+}
+
+double quantile(std::vector<double> v, double q) {
+  if (v.empty()) return 0;
+  const auto k = std::ptrdiff_t(std::min(v.size() - 1, std::size_t(q * double(v.size()))));
+  std::nth_element(v.begin(), v.begin() + k, v.end());
+  return v[std::size_t(k)];
+}
+
+// Centre-line error per radius class: exact distances to the segments of the nearest samples
+// (the sampling step would otherwise add up to half a step to every distance).
+void centre_errors(const std::vector<Skeleton>& truth, const std::vector<Skeleton>& rec,
+                   const CompareOptions& o, SkeletonComparison& c) {
+  if (o.radius_classes.size() < 2) return;
+  std::vector<Eigen::Vector3d> along, seg_a, seg_b;
+  std::vector<std::uint32_t> seg_of;
+  for (const Skeleton& sk : rec) {
+    for (const SkeletonNode& n : sk.nodes) {
+      if (n.parent == kNoParent || n.parent >= sk.size()) continue;
+      const Vec3& p = sk.nodes[n.parent].position;
+      const Eigen::Vector3d a(p.x, p.y, p.z), b(n.position.x, n.position.y, n.position.z);
+      const int steps = std::clamp(int(std::ceil((b - a).norm() / o.spacing)), 1, 100000);
+      for (int k = 0; k <= steps; ++k) {
+        along.push_back(a + (b - a) * (double(k) / steps));
+        seg_of.push_back(std::uint32_t(seg_a.size()));
+      }
+      seg_a.push_back(a), seg_b.push_back(b);
+    }
+  }
+  const std::size_t classes = o.radius_classes.size() - 1;
+  std::vector<std::vector<double>> rel(classes);
+  std::vector<double> all;
+  const Samples t = sample(truth, o.spacing);
+  std::unique_ptr<bsg::PointIndex> index;
+  if (!along.empty()) index = std::make_unique<bsg::PointIndex>(along);
+  for (std::size_t i = 0; i < t.pos.size(); ++i) {
+    const double r = t.radius[i];
+    const auto it = std::upper_bound(o.radius_classes.begin(), o.radius_classes.end(), r);
+    if (it == o.radius_classes.begin() || it == o.radius_classes.end()) continue;
+    const std::size_t k = std::size_t(it - o.radius_classes.begin()) - 1;
+    double best = std::numeric_limits<double>::infinity();
+    if (index) {
+      std::uint32_t ids[8];
+      double d2[8];
+      const std::size_t m = index->knn(t.pos[i], 8, ids, d2);
+      for (std::size_t j = 0; j < m; ++j) {
+        const std::uint32_t s = seg_of[ids[j]];
+        best = std::min(best, point_segment_distance(t.pos[i], seg_a[s], seg_b[s]));
+      }
+    }
+    rel[k].push_back(best / r);
+    all.push_back(best / r);
+  }
+  for (std::size_t k = 0; k < classes; ++k) {
+    CentreError e;
+    std::vector<double> found;
+    for (double x : rel[k]) {
+      if (x <= 2) found.push_back(x);
+    }
+    e.median_found = quantile(found, 0.5);
+    e.lo = o.radius_classes[k], e.hi = o.radius_classes[k + 1];
+    e.samples = rel[k].size();
+    e.median = quantile(rel[k], 0.5);
+    e.p90 = quantile(rel[k], 0.9);
+    c.centre_error.push_back(e);
+  }
+  c.centre_error_median = quantile(all, 0.5);
 }
 
 }  // namespace
@@ -73,6 +151,8 @@ SkeletonComparison compare_skeletons(const std::vector<Skeleton>& truth,
   c.precision = precision.within_radius;
   c.precision_distance = precision.within_distance;
   c.recall = recall.within_radius;
+  c.precision_1r = precision.within_radius_1;
+  c.recall_1r = recall.within_radius_1;
   c.recall_distance = recall.within_distance;
   c.chamfer = 0.5 * (precision.mean_distance + recall.mean_distance);
   c.length_truth = t.length;
@@ -80,6 +160,7 @@ SkeletonComparison compare_skeletons(const std::vector<Skeleton>& truth,
   c.length_ratio = t.length > 0 ? r.length / t.length : 0;
   c.branches_truth = t.tips;
   c.branches_reconstructed = r.tips;
+  centre_errors(truth, reconstructed, o, c);
   return c;
 }
 

@@ -13,17 +13,35 @@ struct CompareOptions {
   double distance = 0.1;       // ... or, for the fixed-distance scores, within this distance
   double spacing = 0.02;       // sampling step along segments
   double min_radius = 0.0;     // floor under truth radii (thin twigs), in the cloud's units
+  // Bounds of the radius classes of the centre-line error (truth radii, unfloored), ascending:
+  // {0.05, 0.1, 0.2, 0.4, 0.65} gives the classes [5, 10), [10, 20), [20, 40), [40, 65) cm.
+  std::vector<double> radius_classes;
+};
+
+// Centre-line error of one class of truth radii: the distance from each truth sample to the
+// nearest reconstructed segment, divided by the truth radius there.
+struct CentreError {
+  double lo = 0, hi = 0;       // truth radii in [lo, hi)
+  std::size_t samples = 0;     // truth samples in the class
+  double median = 0, p90 = 0;  // of distance / radius
+  // The median over the samples the reconstruction found (within 2 x radius): how well the
+  // found branches are centred, apart from the branches missed (which recall counts).
+  double median_found = 0;
 };
 
 struct SkeletonComparison {
   double precision = 0;           // reconstructed samples within t x radius of the truth
   double recall = 0;              // truth samples within t x radius of the reconstruction
+  double precision_1r = 0;        // the same within 1 x radius (the uc-vision synthetic-trees
+  double recall_1r = 0;           // evaluation reports 1x and 2x)
   double precision_distance = 0;  // the same within the fixed distance
   double recall_distance = 0;
-  double chamfer = 0;             // mean of the two mean nearest-sample distances
+  double chamfer = 0;  // mean of the two mean nearest-sample distances
   double length_truth = 0, length_reconstructed = 0;
-  double length_ratio = 0;        // reconstructed / truth
+  double length_ratio = 0;                                     // reconstructed / truth
   std::size_t branches_truth = 0, branches_reconstructed = 0;  // branch tips
+  std::vector<CentreError> centre_error;  // one per radius class (CompareOptions)
+  double centre_error_median = 0;         // over all classes' samples (0 when no class)
 };
 
 SkeletonComparison compare_skeletons(const std::vector<Skeleton>& truth,

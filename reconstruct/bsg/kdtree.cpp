@@ -65,6 +65,14 @@ std::size_t PointIndex::knn_within(const Eigen::Vector3d& q, std::size_t k, doub
   return n;
 }
 
+void PointIndex::within(const Eigen::Vector3d& q, double radius,
+                        std::vector<std::uint32_t>& out) const {
+  if (size() == 0 || !(radius > 0)) return;
+  std::vector<std::pair<std::uint32_t, double>> found;
+  tree_->radiusSearch(q.data(), radius * radius, found, nanoflann::SearchParams(32, 0, false));
+  for (const auto& f : found) out.push_back(original(f.first));
+}
+
 double median_spacing(const std::vector<Eigen::Vector3d>& pts,
                       const std::vector<std::uint32_t>& ids, bool skip_duplicates) {
   if (ids.size() < 2) return 0.0;

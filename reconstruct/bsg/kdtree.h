@@ -24,6 +24,9 @@ class PointIndex {
   std::size_t knn_within(const Eigen::Vector3d& q, std::size_t k, double radius, std::uint32_t* out,
                          double* d2) const;
 
+  // Every point within `radius` of q (original indices, unordered), appended to `out`.
+  void within(const Eigen::Vector3d& q, double radius, std::vector<std::uint32_t>& out) const;
+
   // nanoflann's dataset interface.
   std::size_t kdtree_get_point_count() const { return size(); }
   double kdtree_get_pt(std::size_t i, std::size_t dim) const { return at(i)[int(dim)]; }

@@ -7,11 +7,12 @@
 #include <cmath>
 #include <deque>
 
-#include "reconstruct/flood/line_fit.h"
-#include "reconstruct/flood/voxel_grid.h"
 #include "reconstruct/bsg/bases.h"
+#include "reconstruct/bsg/centre_line.h"
 #include "reconstruct/bsg/finite_points.h"
 #include "reconstruct/bsg/kdtree.h"
+#include "reconstruct/flood/line_fit.h"
+#include "reconstruct/flood/voxel_grid.h"
 
 namespace ramus::flood {
 
@@ -491,6 +492,21 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
     res.counts.bridged_gaps += bridged;
   }
   res.timings.forest = seconds_since(t);
+
+  // Centre lines (docs/reconstruction.md): the flood's nodes sit at the centres of flood layers,
+  // which on a bark-only scan of a thick stem are arcs of its surface, not its axis.
+  if (o.centre_lines && !trees.empty()) {
+    t = Clock::now();
+    std::vector<Eigen::Vector3d> wood;
+    for (std::uint32_t i : kept_ids) wood.push_back(epts[i]);
+    bsg::CentreLineParams cp;
+    cp.spacing = 0.5 * edge;
+    cp.passes = 1;  // the flood's nodes already sit inside their branches' cross-sections
+    for (Skeleton& s : trees) {
+      if (s.size() >= 2) bsg::centre_skeleton(s, wood, cp);
+    }
+    res.timings.inflate = seconds_since(t);
+  }
 
   // World coordinates; root frames along their first segment. Trees without a segment go.
   std::vector<std::uint32_t> renumber(trees.size(), ReconstructResult::kNoTree);

@@ -48,6 +48,9 @@ struct FloodOptions {
   // Groups of voxels no flood reached (scan gaps) join the nearest node within this distance as
   // side branches; 0: 8% of the cloud's height, at least 3 voxels (as the BSG method).
   double max_gap = 0;
+  // Centre lines: nodes moved onto circles fitted to their cross-sections, radii from the fits
+  // (reconstruct/bsg/centre_line.h; docs/reconstruction.md).
+  bool centre_lines = true;
   // Tree bases: as in ReconstructOptions; `roots` (world positions) skips base detection.
   bool remove_terrain = true;
   std::vector<Vec3> roots;
@@ -56,7 +59,7 @@ struct FloodOptions {
 // Builds one Skeleton per tree base. Throws ReconstructError for a cloud without two finite
 // points; a cloud without any tree gives no trees and a note saying why. Deterministic.
 // Fills timings.bases (base finding), timings.graph (voxelization), timings.forest (flood and
-// fitting) and timings.total.
+// fitting), timings.inflate (centre lines) and timings.total.
 ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions& options = {});
 
 }  // namespace ramus::flood

@@ -13,7 +13,39 @@ std::string percent(double f) {
   return buf;
 }
 
+std::string number(const char* format, double v) {
+  char buf[48];
+  std::snprintf(buf, sizeof buf, format, v);
+  return buf;
+}
+
 }  // namespace
+
+LeafDecision decide_leaf_removal(const WoodSeparation& ws, LeafHandling handling,
+                                 const WoodOptions& o) {
+  LeafDecision d;
+  const std::string evidence =
+      percent(ws.leaf_fraction) + " of the points classified leaf (Ashman's D " +
+      number("%.2f", ws.separation) + ", " + percent(ws.upper_share) +
+      " of the cells above Otsu's threshold, spacing " + number("%.3g", ws.spacing) +
+      " for a height of " + number("%.3g", ws.height) + ")";
+  if (handling == LeafHandling::kRemove) {
+    d.remove = true;
+    d.note = "wood/leaf separation: " + evidence + ": removed";
+  } else if (handling == LeafHandling::kAuto) {
+    // Every test must point to foliage; any doubt keeps the scan whole, because removing the
+    // twigs of a leafless crown loses the tree while keeping a few leaves only adds spurs.
+    const bool resolved = ws.height > 0 && ws.spacing <= o.auto_max_spacing * ws.height;
+    d.remove = ws.leaf_mode && resolved && ws.leaf_fraction >= o.auto_leaf_fraction;
+    const char* why =
+        d.remove        ? "foliage found: removed"
+        : !ws.leaf_mode ? "no separate foliage mode: the scan is wood, all points kept"
+        : !resolved     ? "the scan is too sparse to tell leaves from twigs: all points kept"
+                        : "too few to be foliage: all points kept";
+    d.note = "wood/leaf separation (auto): " + evidence + "; " + why;
+  }
+  return d;
+}
 
 ReconstructResult reconstruct_without_leaves(const PointCloud& cloud,
                                              const ReconstructOptions& options) {
@@ -23,16 +55,9 @@ ReconstructResult reconstruct_without_leaves(const PointCloud& cloud,
   // reconstruct() names what is wrong with a cloud that has no usable point.
   if (cloud.empty()) return reconstruct(cloud, inner);
   const WoodSeparation ws = separate_wood(cloud);
-  std::string note;
-  bool remove = options.leaves_in_scan == LeafHandling::kRemove;
-  if (options.leaves_in_scan == LeafHandling::kAuto) {
-    remove = ws.leaf_fraction >= WoodOptions{}.auto_leaf_fraction;
-    note = "wood/leaf separation: " + percent(ws.leaf_fraction) + " of the points look like " +
-           (remove ? "foliage: removed" : "foliage, too few to remove: all points kept");
-  } else {
-    note =
-        "wood/leaf separation: " + percent(ws.leaf_fraction) + " of the points removed as foliage";
-  }
+  const LeafDecision decision = decide_leaf_removal(ws, options.leaves_in_scan);
+  std::string note = decision.note;
+  bool remove = decision.remove;
   if (remove && ws.finite_points - ws.leaf_points < 2) {
     remove = false;
     note = "wood/leaf separation left fewer than two wood points: all points kept";

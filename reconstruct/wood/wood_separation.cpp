@@ -152,6 +152,7 @@ WoodSeparation separate_wood(const PointCloud& cloud, const WoodOptions& o) {
   }
   const double height = hi.z() - lo.z(), spacing = bsg::median_spacing(pts, ids, true);
   res.scale = o.scale > 0 ? o.scale : std::max(height / 100, 6 * spacing);
+  res.spacing = spacing, res.height = height;
   if (!(res.scale > 0) || !std::isfinite(res.scale)) {
     res.notes.push_back("the points have no extent: all kept as wood");
     res.scale = 0;
@@ -184,6 +185,7 @@ WoodSeparation separate_wood(const PointCloud& cloud, const WoodOptions& o) {
   res.separation = m.separation();
   const wood::OtsuThreshold otsu = wood::otsu_threshold(score);
   res.leaf_mode = res.separation >= o.min_separation && otsu.upper_fraction >= o.min_leaf_share;
+  res.upper_share = otsu.upper_fraction;
   if (res.leaf_mode) {
     res.threshold = otsu.threshold;
   } else {

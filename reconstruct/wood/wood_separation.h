@@ -45,8 +45,12 @@ struct WoodOptions {
   // Connected wood regions whose bounding box diagonal is shorter than this many r are leaf
   // cards (the largest region, the stem, is always wood).
   double min_region_extent = 4.0;
-  // kAuto removes the leaves when at least this fraction of the points is classified leaf.
+  // kAuto removes the leaves when at least this fraction of the points is classified leaf, the
+  // mixture found a foliage mode, and the scan resolves leaves at all: its median point spacing
+  // is at most this fraction of its height (sparse airborne scans, ~H / 60, do not: their crown
+  // of bare twigs scatters like foliage).
   double auto_leaf_fraction = 0.25;
+  double auto_max_spacing = 1.0 / 150;
 };
 
 struct WoodSeparation {
@@ -56,6 +60,9 @@ struct WoodSeparation {
   std::size_t leaf_points = 0;
   double leaf_fraction = 0;  // leaf_points / finite_points
   double scale = 0;          // the radius r used
+  double spacing = 0;        // median point spacing
+  double height = 0;         // extent of the finite points along z
+  double upper_share = 0;    // share of the cells above Otsu's threshold
   double threshold = 0;      // scores above this are leaf (infinity when no leaf mode)
   double separation = 0;     // Ashman's D of the fitted mixture
   bool leaf_mode = false;    // the mixture found a separate foliage mode
@@ -69,6 +76,15 @@ struct WoodError : std::runtime_error {
 // Classifies every point. Deterministic (same cloud and options -> same bytes). Throws WoodError
 // for an empty cloud; a cloud with too few finite points to measure is all wood, with a note.
 WoodSeparation separate_wood(const PointCloud& cloud, const WoodOptions& options = {});
+
+// kAuto's decision (docs/wood-separation.md): whether to remove the points classified leaf, and
+// a note giving the evidence (leaf fraction, Ashman's D, share above Otsu's threshold, spacing).
+struct LeafDecision {
+  bool remove = false;
+  std::string note;
+};
+LeafDecision decide_leaf_removal(const WoodSeparation& ws, LeafHandling handling,
+                                 const WoodOptions& options = {});
 
 // The points where keep[i] != 0, with their optional channels.
 PointCloud select_points(const PointCloud& cloud, const std::vector<std::uint8_t>& keep);

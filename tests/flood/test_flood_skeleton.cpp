@@ -5,9 +5,9 @@
 
 #include "compiler/grow.h"
 #include "formats/point_cloud_io.h"
+#include "reconstruct/bsg/compare.h"
 #include "reconstruct/flood/flood_skeleton.h"
 #include "reconstruct/flood/line_fit.h"
-#include "reconstruct/bsg/compare.h"
 #include "tests/flood/flood_fixtures.h"
 #include "tests/support/harness.h"
 
@@ -100,7 +100,10 @@ TEST_CASE("flood: vertical bark cylinder gives a straight skeleton of twice the 
   PointCloud c;
   const double r = 0.05;
   test::add_cylinder(c, {0, 0, 0}, {0, 0, 2}, r, 20000, false, 1);
-  const auto res = flood_reconstruct(c, rooted_at({0, 0, 0}));
+  // Alg. 5's radius alone: the centre lines (on by default) replace it by the fitted one.
+  FloodOptions alg5 = rooted_at({0, 0, 0});
+  alg5.centre_lines = false;
+  const auto res = flood_reconstruct(c, alg5);
   REQUIRE(res.trees.size() == 1);
   const Skeleton& s = res.trees[0];
   INFO("nodes " << s.size() << " voxel " << res.voxel_size);
@@ -117,9 +120,14 @@ TEST_CASE("flood: vertical bark cylinder gives a straight skeleton of twice the 
   for (const SkeletonNode& n : s.nodes) CHECK(std::hypot(n.position.x, n.position.y) < 0.5 * r);
   // Bark points lie at distance r from the axis: Alg. 5 gives 2r.
   CHECK(mean_radius(s) == Approx(2 * r).epsilon(0.15));
-  FloodOptions unit = rooted_at({0, 0, 0});
+  FloodOptions unit = alg5;
   unit.radius_factor = 1.0;
   CHECK(mean_radius(flood_reconstruct(c, unit).trees.at(0)) == Approx(r).epsilon(0.15));
+  // With the centre lines: the radius of the fitted circles, and the nodes on the axis.
+  const Skeleton centred = flood_reconstruct(c, rooted_at({0, 0, 0})).trees.at(0);
+  CHECK(mean_radius(centred) == Approx(r).epsilon(0.1));
+  for (const SkeletonNode& n : centred.nodes)
+    CHECK(std::hypot(n.position.x, n.position.y) < 0.2 * r);
 }
 
 TEST_CASE("flood: solid tilted cylinder, direction and radius error bounds", "[flood]") {

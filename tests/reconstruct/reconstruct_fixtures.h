@@ -31,16 +31,23 @@ inline void grow_branch(Skeleton& s, Rng& rng, std::uint32_t from, Vec3 dir, dou
   }
 }
 
-inline Skeleton synthetic_tree(std::uint64_t seed, Vec3 base, double height = 6.0,
-                               int levels = 2) {
+inline Skeleton synthetic_tree(std::uint64_t seed, Vec3 base, double height = 6.0, int levels = 2,
+                               double base_radius = 0) {
   Rng rng(seed);
   Skeleton s;
   SkeletonNode root;
   root.position = base;
-  root.radius = height * 0.025;
+  root.radius = base_radius > 0 ? base_radius : height * 0.025;
   s.add(root);
   grow_branch(s, rng, 0, {0, 0, 1}, height, root.radius, levels, height / 24);
   return s;
+}
+
+// A thick tree for the centre-line harness (issue 19): the trunk tapers from `base_radius` to
+// half of it, limbs start at 0.55 x the trunk's radius where they leave it, their branches at
+// 0.55 x the limb's; with base_radius 0.6 the radii span about 5-60 cm.
+inline Skeleton thick_tree(std::uint64_t seed, double height, double base_radius) {
+  return synthetic_tree(seed, {0, 0, 0}, height, 2, base_radius);
 }
 
 // Points on the surface of each segment's cylinder: `density` points per unit area plus

@@ -36,8 +36,9 @@ TEST_CASE("reconstruct accuracy: thick-branched synthetic tree, three stations, 
   CHECK(a.branches_reconstructed <= 2 * a.branches_truth);
 }
 
-// The same tree with the axis projection switched off: the parallel paths come back. This shows
-// that the projection, not another setting, is what keeps thick branches to one chain.
+// The same tree with the axis projection switched off (and the centre lines, which remove the
+// parallel chains inside fitted stems on their own: length 1.24 with them): the parallel paths
+// come back. This shows that the projection is what keeps thick branches to one chain.
 TEST_CASE("reconstruct accuracy: thick branches keep parallel paths without the axis projection",
           "[accuracy]") {
   const Skeleton truth = test::synthetic_tree(7, {0, 0, 0});
@@ -47,10 +48,15 @@ TEST_CASE("reconstruct accuracy: thick branches keep parallel paths without the 
   ReconstructOptions o;
   o.axis_levels = 0;
   o.contraction_steps = 10;
+  o.centre_lines = false;
   const scanner::HarnessResult r = scanner::run_harness(truth, c, o);
   INFO("length " << r.at_radius.length_ratio);
   REQUIRE(r.trees == 1);
   CHECK(r.at_radius.length_ratio > 1.5);
+  o.centre_lines = true;
+  const scanner::HarnessResult centred = scanner::run_harness(truth, c, o);
+  INFO("length with centre lines " << centred.at_radius.length_ratio);
+  CHECK(centred.at_radius.length_ratio < r.at_radius.length_ratio);
 }
 
 TEST_CASE("reconstruct accuracy: synthetic tree scanned from one station", "[accuracy]") {
@@ -72,12 +78,12 @@ TEST_CASE("reconstruct accuracy: synthetic tree scanned from one station", "[acc
 }
 
 // The issue's targets (precision within 2 x radius >= 0.9, total length within 20%) on the
-// bundled grammar trees scanned from three stations, with the default options. Measured:
-// broadleaf 0.989 / 0.888, conifer 0.983 / 0.929, weeping 0.920 / 1.131. Deterministic (fixed
-// grammar seed, scanner seed and reconstruction); the checks are the targets themselves, so the
-// margins are the distances to them: precision 0.089 / 0.083 / 0.020, length 0.088 / 0.129 /
-// 0.069. The fixed-distance recall (1% of the height) is a regression guard: measured 0.96 /
-// 0.91 / 0.99.
+// bundled grammar trees scanned from three stations, with the default options (centre lines and
+// twig pruning at 10 voxels included). Measured: broadleaf 0.985 / 0.883, conifer 0.982 / 0.893,
+// weeping 0.914 / 1.084. Deterministic (fixed grammar seed, scanner seed and reconstruction); the
+// checks are the targets themselves, so the margins are the distances to them: precision 0.085 /
+// 0.082 / 0.014, length 0.083 / 0.093 / 0.116. The fixed-distance recall (1% of the height) is a
+// regression guard: measured 0.99 / 0.92 / 0.99.
 namespace {
 
 scanner::HarnessResult scan_grammar(const char* grammar, int stations,
@@ -121,7 +127,7 @@ TEST_CASE("reconstruct accuracy: bundled weeping grammar, three stations, defaul
 
 // One station sees one side of the crown; the occluded half is missing, so the targets are not
 // met. Measured with the defaults (precision within 2 x radius, length, precision within 1% of
-// the height): weeping 0.756 / 0.852 / 0.975. Regression guards.
+// the height): weeping 0.748 / 0.860 / 0.979. Regression guards.
 TEST_CASE("reconstruct accuracy: bundled weeping grammar, one station, defaults", "[accuracy]") {
   const scanner::HarnessResult r = scan_grammar("weeping.ramus", 1);
   const SkeletonComparison& a = r.at_radius;
@@ -131,4 +137,61 @@ TEST_CASE("reconstruct accuracy: bundled weeping grammar, one station, defaults"
   CHECK(a.length_ratio > 0.75);
   CHECK(a.length_ratio < 1.2);
   CHECK(a.precision_distance >= 0.9);
+}
+
+// Centre lines (issue 19): an 8 m tree with a 30 cm trunk and limbs of 5-20 cm, thick enough
+// that the shortest paths of the BSG run along the bark. Without centre lines (measured): median
+// centre-line error / radius 0.43 over the 2-40 cm classes, length 3.95 x the truth with 318 tips
+// for 25. With them: 0.056 / 0.020 / 0.104 / 0.003 in the classes 2-5 / 5-10 / 10-20 / 20-40 cm,
+// precision / recall within 2 x radius 0.999 / 0.992, length 1.51, 48 tips.
+namespace {
+
+void check_centre_classes(const SkeletonComparison& a, double lo, double bound, bool found) {
+  for (const CentreError& e : a.centre_error) {
+    if (e.lo < lo || e.samples < 100) continue;
+    INFO("radii " << e.lo << "-" << e.hi << ": median " << e.median << ", found " << e.median_found
+                  << ", n " << e.samples);
+    CHECK((found ? e.median_found : e.median) <= bound);
+  }
+}
+
+}  // namespace
+
+TEST_CASE("reconstruct accuracy: thick tree, three stations: nodes on the axes", "[accuracy]") {
+  const Skeleton truth = test::thick_tree(5, 8.0, 0.3);
+  scanner::HarnessCase c;
+  c.stations = 3;
+  const scanner::HarnessResult r = scanner::run_harness(truth, c);
+  const SkeletonComparison& a = r.at_radius;
+  INFO("precision " << a.precision << " recall " << a.recall << " length " << a.length_ratio
+                    << " tips " << a.branches_reconstructed);
+  REQUIRE(r.trees == 1);
+  CHECK(a.precision >= 0.95);
+  CHECK(a.recall >= 0.9);
+  check_centre_classes(a, 0.05, 0.15, false);
+  CHECK(a.length_ratio < 1.7);
+  ReconstructOptions off;
+  off.centre_lines = false;
+  const scanner::HarnessResult b = scanner::run_harness(truth, c, off);
+  INFO("without centre lines: median " << b.at_radius.centre_error_median << ", length "
+                                       << b.at_radius.length_ratio);
+  CHECK(b.at_radius.centre_error_median > 2 * a.centre_error_median);
+}
+
+// One station sees half of every stem. Measured: precision / recall within 2 x radius 0.968 /
+// 0.802 (the occluded limbs are missing), median error / radius over the found samples 0.433 /
+// 0.135 / 0.066 in the classes 5-10 / 10-20 / 20-40 cm (0.60 / 0.28 / 0.066 over all samples).
+// The trunk meets the target; the limbs do not yet (docs/reconstruction.md, Centre lines).
+TEST_CASE("reconstruct accuracy: thick tree, one station: the trunk on its axis", "[accuracy]") {
+  const Skeleton truth = test::thick_tree(5, 8.0, 0.3);
+  scanner::HarnessCase c;
+  c.stations = 1;
+  const scanner::HarnessResult r = scanner::run_harness(truth, c);
+  const SkeletonComparison& a = r.at_radius;
+  INFO("precision " << a.precision << " recall " << a.recall);
+  REQUIRE(r.trees == 1);
+  CHECK(a.precision >= 0.95);
+  CHECK(a.recall >= 0.75);
+  check_centre_classes(a, 0.2, 0.15, false);
+  check_centre_classes(a, 0.1, 0.25, true);
 }

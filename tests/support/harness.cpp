@@ -50,6 +50,8 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
   // the tree's distance: no scan locates a thinner twig better than that. The floor depends on
   // the scan only, never on the reconstruction (a coarser voxel must not loosen the score).
   co.min_radius = 0.5 / std::sqrt(c.density);
+  // Centre-line error per class of truth radius (metres): twigs, branches, limbs, stems.
+  co.radius_classes = {0.02, 0.05, 0.1, 0.2, 0.4, 0.65};
   r.at_radius = compare_skeletons({truth}, rec.trees, co);
   r.reconstructed = rec.trees;
   return r;

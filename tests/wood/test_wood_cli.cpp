@@ -115,11 +115,12 @@ TEST_CASE("ramus reconstruct --leaves-in-scan: remove and auto drop the foliage,
                  "--no-leaves"});
   INFO(r.out);
   REQUIRE(r.status == 0);
-  CHECK(r.out.find("removed as foliage") != std::string::npos);
+  CHECK(r.out.find("classified leaf") != std::string::npos);
+  CHECK(r.out.find(": removed") != std::string::npos);
   r = run_ramus({"reconstruct", scan.string(), "-o", automatic.string(), "--leaves-in-scan", "auto",
                  "--no-leaves"});
   REQUIRE(r.status == 0);
-  CHECK(r.out.find("look like foliage: removed") != std::string::npos);
+  CHECK(r.out.find("foliage found: removed") != std::string::npos);
   // One tree each; the foliage no longer grows skeleton nodes.
   CHECK(count_of(slurp(removed), "\"parent\": -1") == 1);
   CHECK(slurp(automatic) == slurp(removed));

@@ -199,7 +199,7 @@ TEST_CASE("wood separation: reconstruct with the leaves removed maps every input
   CHECK(in_tree > 0);
   REQUIRE(!r.notes.empty());
   CHECK(r.notes.front().find("wood/leaf separation") != std::string::npos);
-  // auto removes them too (far above a quarter of the points look like foliage).
+  // auto removes them too (a foliage mode, far above a quarter of the points, a fine scan).
   o.leaves_in_scan = LeafHandling::kAuto;
   CHECK(reconstruct(s.cloud, o).point_tree == r.point_tree);
 }

@@ -1,0 +1,381 @@
+#include "reconstruct/bsg/centre_line.h"
+
+#include <tbb/parallel_for.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+#include <cmath>
+
+#include "reconstruct/bsg/bsg.h"
+#include "reconstruct/bsg/circle_fit.h"
+#include "reconstruct/bsg/kdtree.h"
+
+namespace ramus::bsg {
+
+namespace {
+
+struct SlabFit {
+  bool ok = false;
+  Eigen::Vector3d axis_point;
+  double radius = 0;
+};
+
+// The local branch direction at v: from two nodes up to two nodes down the heaviest child (the
+// child with the largest subtree), which smooths the zig-zags of single edges.
+Eigen::Vector3d direction_at(std::uint32_t v, const std::vector<Eigen::Vector3d>& pos,
+                             const std::vector<std::uint32_t>& parent,
+                             const std::vector<std::uint32_t>& main_child,
+                             const std::vector<std::uint8_t>& fork) {
+  std::uint32_t a = v, b = v;
+  for (int k = 0; k < 2; ++k) {
+    if (parent[a] != kNone) a = parent[a];
+    // At a fork the way out may be a limb as heavy as the stem; the way in is the stem.
+    if (main_child[b] != kNone && (!fork[v] || a == v)) b = main_child[b];
+  }
+  Eigen::Vector3d d = pos[b] - pos[a];
+  if (!(d.norm() > 0)) return Eigen::Vector3d::UnitZ();
+  return d.normalized();
+}
+
+// Fits the cross-section at `x` (direction d). The search disc grows when the circle reaches
+// beyond it: a node on the bark of a stem thicker than its radius hint sees only part of it.
+SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint,
+                 const PointIndex& index, const std::vector<Eigen::Vector3d>& samples,
+                 const std::vector<double>& weight, const CentreLineParams& p, double noise) {
+  SlabFit out;
+  const Eigen::Vector3d helper =
+      std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d e1 = d.cross(helper).normalized(), e2 = d.cross(e1);
+  // The first disc is at most 20 spacings wide (a generous hint would gather thousands of points
+  // for every node); it grows below when the circle reaches beyond it.
+  double r0 = std::clamp(hint, 2 * p.spacing, 20 * p.spacing);
+  std::vector<std::uint32_t> near;
+  std::vector<Eigen::Vector2d> pts;
+  std::vector<double> w;
+  double thicken = 1;  // a sparse slab (a thin branch far from the scanner) is taken thicker once
+  for (int attempt = 0; attempt < 4; ++attempt) {
+    const double reach = std::max(2.5 * r0, 5 * p.spacing);
+    const double half = thicken * std::max(0.3 * r0, 1.5 * p.spacing);
+    near.clear();
+    index.within(x, std::sqrt(reach * reach + half * half), near);
+    pts.clear(), w.clear();
+    for (std::uint32_t i : near) {
+      const Eigen::Vector3d q = samples[i] - x;
+      if (std::abs(q.dot(d)) > half) continue;
+      const Eigen::Vector2d uv(q.dot(e1), q.dot(e2));
+      if (uv.squaredNorm() > reach * reach) continue;
+      pts.push_back(uv);
+      w.push_back(weight.empty() ? 1.0 : weight[i]);
+    }
+    if (pts.size() < 8 && thicken == 1 && pts.size() >= 3) {
+      thicken = 2;
+      continue;
+    }
+    if (pts.size() < 8) return out;
+    if (int(pts.size()) > p.max_slab_points) {
+      const std::size_t stride = (pts.size() + p.max_slab_points - 1) / p.max_slab_points;
+      std::size_t k = 0;
+      for (std::size_t i = 0; i < pts.size(); i += stride) pts[k] = pts[i], w[k] = w[i], ++k;
+      pts.resize(k), w.resize(k);
+    }
+    const CircleFit f = fit_circle(pts, w, noise);
+    if (!f.valid) return out;
+    const double extent = f.centre.norm() + f.radius;
+    // A radius far above the hint is a flat arc (a scan's edge, a wall of twigs), not a stem.
+    if (f.radius > p.max_hint_factor * std::max(hint, 2 * p.spacing)) return out;
+    if (extent > 0.9 * reach && attempt < 3) {
+      r0 = std::min(2 * r0, 1.3 * std::max(f.radius, f.centre.norm()));
+      continue;
+    }
+    const bool good = f.coverage >= p.min_coverage && f.inlier_fraction >= p.min_inliers &&
+                      f.residual <= p.max_residual * f.radius + noise && f.radius >= p.spacing &&
+                      extent <= reach && f.centre.norm() <= p.max_shift * f.radius + 2 * p.spacing;
+    if (!good) return out;
+    out.ok = true;
+    out.axis_point = x + f.centre.x() * e1 + f.centre.y() * e2;
+    out.radius = f.radius;
+    return out;
+  }
+  return out;
+}
+
+// Nodes in parent-first order, and each node's child with the largest subtree.
+void tree_order(const std::vector<std::uint32_t>& parent, std::vector<std::uint32_t>& order,
+                std::vector<std::uint32_t>& main_child) {
+  const std::size_t n = parent.size();
+  std::vector<std::vector<std::uint32_t>> ch(n);
+  order.clear();
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (parent[v] == kNone || parent[v] >= n) {
+      order.push_back(v);
+    } else {
+      ch[parent[v]].push_back(v);
+    }
+  }
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    for (std::uint32_t c : ch[order[i]]) order.push_back(c);
+  }
+  std::vector<std::size_t> size(n, 1);
+  for (std::size_t i = order.size(); i-- > 0;) {
+    const std::uint32_t v = order[i];
+    if (parent[v] != kNone && parent[v] < n) size[parent[v]] += size[v];
+  }
+  main_child.assign(n, kNone);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    for (std::uint32_t c : ch[v]) {
+      if (main_child[v] == kNone || size[c] > size[main_child[v]]) main_child[v] = c;
+    }
+  }
+}
+
+}  // namespace
+
+CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
+                             const std::vector<std::uint32_t>& parent,
+                             const std::vector<double>& radius,
+                             const std::vector<Eigen::Vector3d>& samples,
+                             const std::vector<double>& sample_weight, const CentreLineParams& p) {
+  const std::size_t n = pos.size();
+  CentreLineResult res;
+  res.fitted.assign(n, 0);
+  res.radius.assign(n, 0.0);
+  if (n == 0 || samples.size() < 8 || !(p.spacing > 0)) return res;
+  std::vector<std::uint32_t> order, main_child;
+  tree_order(parent, order, main_child);
+  const PointIndex index(samples);
+  std::vector<std::uint8_t> fork(n, 0);
+  {
+    std::vector<int> children(n, 0);
+    for (std::uint32_t v = 0; v < n; ++v) {
+      if (parent[v] < n) ++children[parent[v]];
+    }
+    for (std::uint32_t v = 0; v < n; ++v) fork[v] = children[v] > 1;
+  }
+  const double noise = p.noise > 0 ? p.noise : 0.25 * p.spacing;
+  const std::vector<Eigen::Vector3d> original = pos;
+  std::vector<SlabFit> fits(n);
+  for (int pass = 0; pass < std::max(1, p.passes); ++pass) {
+    // Every node is fitted from the positions of the previous pass (Jacobi: the result does not
+    // depend on the order or the thread count).
+    const std::vector<Eigen::Vector3d> from = pass == 0 ? original : pos;
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t v) {
+      // Twigs thinner than the spacing cannot be fitted (and the axis projection has already
+      // centred them); a second pass refits only what the first one fitted.
+      if (pass == 0 ? radius[v] < p.min_hint_spacings * p.spacing : !fits[v].ok) return;
+      const double hint = pass == 0 ? radius[v] : fits[v].radius;
+      const Eigen::Vector3d d = direction_at(std::uint32_t(v), from, parent, main_child, fork);
+      fits[v] = fit_slab(from[v], d, hint, index, samples, sample_weight, p, noise);
+    });
+    // Plausibility along the branches, parents first: no thickening outwards.
+    std::vector<double> ancestor(n, 0.0);  // radius of the nearest accepted ancestor (0: none)
+    for (std::uint32_t v : order) {
+      const std::uint32_t u = parent[v] < n ? parent[v] : kNone;
+      const double ra = u == kNone ? 0.0 : (fits[u].ok ? fits[u].radius : ancestor[u]);
+      if (fits[v].ok && ra > 0 && fits[v].radius > p.max_growth * ra + p.spacing)
+        fits[v].ok = false;
+      ancestor[v] = ra;
+    }
+    for (std::size_t v = 0; v < n; ++v) pos[v] = fits[v].ok ? fits[v].axis_point : original[v];
+    // A fork whose slab could not be fitted (it cuts the stem and its branches at once) lies on
+    // the stem's axis: the line through the two fitted nodes below it, when it is near that line.
+    for (std::uint32_t v : order) {
+      if (!fork[v] || fits[v].ok) continue;
+      const std::uint32_t u = parent[v];
+      if (u >= n || !fits[u].ok || parent[u] >= n || !fits[parent[u]].ok) continue;
+      const Eigen::Vector3d a = pos[parent[u]], d = pos[u] - a;
+      if (!(d.squaredNorm() > 0)) continue;
+      const Eigen::Vector3d on = a + d * ((original[v] - a).dot(d) / d.squaredNorm());
+      if ((on - original[v]).norm() <= 1.5 * fits[u].radius + p.spacing) pos[v] = on;
+    }
+  }
+  for (std::size_t v = 0; v < n; ++v) {
+    res.fitted[v] = fits[v].ok;
+    res.radius[v] = fits[v].ok ? fits[v].radius : 0.0;
+    res.fitted_count += fits[v].ok;
+  }
+  return res;
+}
+
+void subdivide_long_edges(Bsg& b, double spacing, double min_radius, double edge_radii,
+                          double edge_spacings) {
+  if (b.size() < 2) return;
+  Bsg out;
+  std::vector<std::uint32_t> local(b.size(), kNone);
+  auto push = [&](const Eigen::Vector3d& pos, std::uint32_t parent, std::uint32_t vertex,
+                  double weight, double radius, double mass) {
+    out.pos.push_back(pos), out.parent.push_back(parent), out.vertex.push_back(vertex);
+    out.weight.push_back(weight), out.radius.push_back(radius), out.mass.push_back(mass);
+    return std::uint32_t(out.pos.size() - 1);
+  };
+  for (std::uint32_t v = 0; v < b.size(); ++v) {
+    std::uint32_t up = b.parent[v] == kNone ? kNone : local[b.parent[v]];
+    double mass = b.mass[v];
+    if (up != kNone) {
+      const std::uint32_t u = b.parent[v];
+      // Only branches thick enough to be fitted (CentreLineParams::min_hint_spacings).
+      const double limit = std::max(edge_radii * b.radius[v], edge_spacings * spacing);
+      const int parts = b.radius[v] < min_radius
+                            ? 1
+                            : int(std::min(64.0, std::ceil((b.pos[v] - b.pos[u]).norm() / limit)));
+      // The edge's points are shared among its parts (collapses weight positions by mass).
+      mass = b.mass[v] / std::max(parts, 1);
+      for (int k = 1; k < parts; ++k) {
+        const double t = double(k) / parts;
+        up = push(b.pos[u] + t * (b.pos[v] - b.pos[u]), up, kNone, b.weight[v],
+                  b.radius[u] + t * (b.radius[v] - b.radius[u]), mass);
+      }
+    }
+    local[v] = push(b.pos[v], up, b.vertex[v], b.weight[v], b.radius[v], mass);
+  }
+  b = std::move(out);
+}
+
+std::size_t drop_branches_inside_stems(Bsg& b, const std::vector<std::uint8_t>& fitted,
+                                       double spacing) {
+  const std::size_t n = b.size();
+  if (n < 3 || fitted.size() != n) return 0;
+  // Containers: the edges whose both ends were fitted, as cylinders of the larger radius.
+  std::vector<std::uint32_t> seg;  // child vertex of each container edge
+  std::vector<Eigen::Vector3d> mid;
+  double reach = 0;
+  for (std::uint32_t v = 0; v < n; ++v) {
+    const std::uint32_t u = b.parent[v];
+    if (u == kNone || !fitted[v] || !fitted[u]) continue;
+    seg.push_back(v);
+    mid.push_back(0.5 * (b.pos[u] + b.pos[v]));
+    const double r = std::max(b.radius[u], b.radius[v]);
+    reach = std::max(reach, 0.5 * (b.pos[v] - b.pos[u]).norm() + 1.5 * r + 3 * spacing);
+  }
+  if (seg.empty()) return 0;
+  const PointIndex index(mid);
+  std::vector<std::uint8_t> alive(n, 1);
+  std::vector<int> children(n, 0);
+  for (std::uint32_t v = 1; v < n; ++v) {
+    if (b.parent[v] != kNone) ++children[b.parent[v]];
+  }
+  std::vector<std::uint8_t> in_chain(n, 0);
+  std::vector<std::uint32_t> chain, near;
+  auto inside_other = [&](const Eigen::Vector3d& q) {
+    near.clear();
+    index.within(q, reach, near);
+    for (std::uint32_t k : near) {
+      const std::uint32_t v = seg[k], u = b.parent[v];
+      if (!alive[v] || in_chain[v]) continue;
+      const Eigen::Vector3d a = b.pos[u], ab = b.pos[v] - a;
+      const double l2 = ab.squaredNorm();
+      const double t = l2 > 0 ? std::clamp((q - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+      const double r = std::max(b.radius[u], b.radius[v]);
+      if ((q - a - t * ab).norm() <= 1.1 * r + 2 * spacing) return true;
+    }
+    return false;
+  };
+  std::size_t removed = 0;
+  for (int round = 0; round < 4; ++round) {
+    std::size_t this_round = 0;
+    // Leaf chains, from the tip down to the fork, tips in descending index order (removals take
+    // effect at once, so of two chains centred on one axis only one goes).
+    for (std::uint32_t tip = std::uint32_t(n); tip-- > 1;) {
+      if (!alive[tip] || children[tip] != 0) continue;
+      chain.clear();
+      for (std::uint32_t v = tip; v != kNone && b.parent[v] != kNone; v = b.parent[v]) {
+        chain.push_back(v);
+        if (children[b.parent[v]] != 1) break;
+      }
+      const std::uint32_t fork = b.parent[chain.back()];
+      if (fork == kNone || children[fork] < 2) continue;  // the trunk's own top
+      for (std::uint32_t v : chain) in_chain[v] = 1;
+      bool all_inside = true;
+      for (std::uint32_t v : chain) {
+        if (!inside_other(b.pos[v])) {
+          all_inside = false;
+          break;
+        }
+      }
+      for (std::uint32_t v : chain) in_chain[v] = 0;
+      if (!all_inside) continue;
+      for (std::uint32_t v : chain) alive[v] = 0;
+      --children[fork];
+      this_round += chain.size();
+    }
+    removed += this_round;
+    if (this_round == 0) break;
+  }
+  if (removed == 0) return 0;
+  // Whole leaf chains go, so the survivors' parents survive; indices keep their order.
+  Bsg out;
+  std::vector<std::uint32_t> local(n, kNone);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (!alive[v]) continue;
+    local[v] = std::uint32_t(out.pos.size());
+    out.pos.push_back(b.pos[v]);
+    out.parent.push_back(b.parent[v] == kNone ? kNone : local[b.parent[v]]);
+    out.vertex.push_back(b.vertex[v]);
+    out.weight.push_back(b.weight[v]);
+    out.radius.push_back(b.radius[v]);
+    out.mass.push_back(b.mass[v]);
+  }
+  b = std::move(out);
+  return removed;
+}
+
+void smooth_fitted_radii(const std::vector<std::uint32_t>& parent, const CentreLineResult& fit,
+                         std::vector<double>& radius) {
+  const std::size_t n = parent.size();
+  std::vector<std::vector<double>> near(n);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (!fit.fitted[v]) continue;
+    near[v].push_back(fit.radius[v]);
+    const std::uint32_t u = parent[v];
+    if (u < n && fit.fitted[u]) near[v].push_back(fit.radius[u]), near[u].push_back(fit.radius[v]);
+  }
+  const std::vector<double> prior = radius;  // the caller's (allometric) radii
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (!fit.fitted[v]) continue;
+    auto& a = near[v];
+    std::sort(a.begin(), a.end());
+    radius[v] = a.size() % 2 ? a[a.size() / 2] : 0.5 * (a[a.size() / 2 - 1] + a[a.size() / 2]);
+  }
+  // Nodes without a fit below a fitted one keep the allometric shape, anchored on the nearest
+  // fitted ancestor's measured radius (never above it): otherwise a branch alternates between
+  // fitted and allometric radii, which may differ by 3 x, and its mesh looks knotted.
+  std::vector<std::uint32_t> order, main_child;
+  tree_order(parent, order, main_child);
+  std::vector<std::uint32_t> anchor(n, kNone);
+  for (std::uint32_t v : order) {
+    const std::uint32_t u = parent[v] < n ? parent[v] : kNone;
+    if (fit.fitted[v]) {
+      anchor[v] = v;
+      continue;
+    }
+    anchor[v] = u == kNone ? kNone : anchor[u];
+    const std::uint32_t a = anchor[v];
+    if (a != kNone && prior[a] > 0) radius[v] = radius[a] * std::min(1.0, prior[v] / prior[a]);
+  }
+}
+
+std::size_t centre_skeleton(Skeleton& s, const std::vector<Eigen::Vector3d>& points,
+                            const CentreLineParams& params) {
+  std::vector<Eigen::Vector3d> pos;
+  std::vector<std::uint32_t> parent;
+  std::vector<double> radius;
+  for (const SkeletonNode& node : s.nodes) {
+    pos.emplace_back(node.position.x, node.position.y, node.position.z);
+    parent.push_back(node.parent == kNoParent ? kNone : node.parent);
+    radius.push_back(node.radius);
+  }
+  const CentreLineResult fit = centre_line(pos, parent, radius, points, {}, params);
+  smooth_fitted_radii(parent, fit, radius);
+  std::vector<Vec3> shift(s.size());
+  for (std::size_t v = 0; v < s.size(); ++v) {
+    const Vec3 moved{pos[v].x(), pos[v].y(), pos[v].z()};
+    shift[v] = moved - s.nodes[v].position;
+    s.nodes[v].position = moved;
+    s.nodes[v].radius = radius[v];
+  }
+  for (OrganAnchor& o : s.organs) {
+    if (o.node < s.size()) o.position = o.position + shift[o.node];
+  }
+  return fit.fitted_count;
+}
+
+}  // namespace ramus::bsg

@@ -1,0 +1,90 @@
+// Centre lines: every skeleton node moved onto the axis of the wood around it, and its radius
+// measured there. The shortest paths of the BSG (Livny et al. 2010, 4.1) and the flood fill run
+// along the scanned surface of thick stems, so without this step a trunk's skeleton sits up to
+// its radius away from the true axis (issue 19). The cross-section of a node is the slab of
+// points perpendicular to the local branch direction; a robust circle fit in the slab's plane
+// (circle_fit.h, as TreeQSM and AdTree fit cylinders) gives the axis point and the radius, which
+// replace the node's position and radius where the fit is good. Elsewhere (too few points, an arc
+// too short, a radius implausible against the branch's) the node stays and keeps the radius the
+// caller gave it (Livny 4.3's allometric one). The topology is never changed.
+// docs/reconstruction.md, "Centre lines".
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "core/skeleton.h"
+#include "reconstruct/bsg/bsg.h"
+
+namespace ramus::bsg {
+
+struct CentreLineParams {
+  double spacing = 0;  // point spacing of the samples (the voxel): floors every length below
+  double noise = 0;    // floor of a fit's residual scale; 0: a quarter of the spacing
+  // A fit is accepted when the inliers cover at least this arc (a one-sided scan sees about
+  // 180 degrees of a stem, less at grazing angles) ...
+  double min_coverage = 1.9;  // radians, ~110 degrees
+  // ... their residual scale is at most this fraction of the radius (plus the noise floor) ...
+  double max_residual = 0.2;
+  double min_inliers = 0.5;  // ... at least this share of the slab's points are inliers ...
+  // ... and the radius is at most this factor above the nearest fitted ancestor's (a branch does
+  // not thicken outwards; a slab that cuts its parent's stem near a fork does).
+  double max_growth = 1.3;
+  // ... and at most this factor above the radius hint (allometric radii are off by 2-3 x; a
+  // nearly straight arc fits any huge circle).
+  double max_hint_factor = 6.0;
+  // Nodes whose radius hint is below this many spacings are not fitted (twigs: a circle needs
+  // points around it, and the BSG's axis projection has centred them already).
+  double min_hint_spacings = 0.5;
+  // A node moves at most this many fitted radii (plus two spacings): it lies on the bark or
+  // near it, and a farther circle is another branch's.
+  double max_shift = 1.75;
+  int passes = 2;             // refits from the moved nodes (better directions, centred balls)
+  int max_slab_points = 300;  // slabs with more points are thinned evenly before the fit
+};
+
+struct CentreLineResult {
+  std::vector<std::uint8_t> fitted;  // per node: moved onto a fitted axis
+  std::vector<double> radius;        // per node: the fitted radius (0 where not fitted)
+  std::size_t fitted_count = 0;
+};
+
+// Moves pos[v] onto the fitted axes (parent[v] = kNone for roots; any order). `radius` holds
+// the current radii, the hint for the size of the cross-sections. `samples` are the points,
+// `sample_weight` how many input points each stands for (empty: 1 each).
+CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
+                             const std::vector<std::uint32_t>& parent,
+                             const std::vector<double>& radius,
+                             const std::vector<Eigen::Vector3d>& samples,
+                             const std::vector<double>& sample_weight,
+                             const CentreLineParams& params);
+
+// Splits every edge of radius >= min_radius longer than max(edge_radii x its radius,
+// edge_spacings x spacing) into equal parts (new degree-2 vertices without a graph vertex), so
+// that long collapsed edges, which cut the corners of curved stems, get cross-sections of their
+// own. Parents stay before children.
+void subdivide_long_edges(Bsg& bsg, double spacing, double min_radius, double edge_radii = 2.0,
+                          double edge_spacings = 4.0);
+
+// Removes side branches that never leave a stem: leaf chains (tip back to the fork) whose every
+// node lies within 1.1 x the radius (plus two spacings) of an edge of another branch whose ends
+// were both fitted. These are the shortest paths that ran along the bark of a thick stem beside
+// the one that became its skeleton (issue 19: 3-9 x the true length on trees with 30-60 cm
+// trunks); once the stem is centred they lie inside it. Returns the number of vertices removed.
+std::size_t drop_branches_inside_stems(Bsg& bsg, const std::vector<std::uint8_t>& fitted,
+                                       double spacing);
+
+// Radii after centre_line: fitted nodes take the median of the fitted radii of themselves, their
+// parent and their children (one noisy slab does not make a bulge); the others below a fitted
+// node keep their radii's shape (radius / the fitted ancestor's radius, at most 1) scaled to that
+// ancestor's fitted radius; nodes above every fit keep theirs.
+void smooth_fitted_radii(const std::vector<std::uint32_t>& parent, const CentreLineResult& fit,
+                         std::vector<double>& radius);
+
+// The same on finished skeletons (the flood fill's), against the cloud's points in world
+// coordinates. Returns the number of nodes moved.
+std::size_t centre_skeleton(Skeleton& skeleton, const std::vector<Eigen::Vector3d>& points,
+                            const CentreLineParams& params);
+
+}  // namespace ramus::bsg

@@ -1,0 +1,217 @@
+#include "reconstruct/bsg/circle_fit.h"
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <cmath>
+
+#include "core/rng.h"
+
+namespace ramus::bsg {
+
+namespace {
+
+double weight_of(const std::vector<double>& w, std::size_t i) { return w.empty() ? 1.0 : w[i]; }
+
+// 1.4826 x the median of |e|: the standard deviation of Gaussian residuals. (Unweighted: the
+// weights are point counts of near-uniform voxels, and nth_element keeps the fits cheap.)
+double robust_scale(const std::vector<double>& e, const std::vector<double>&) {
+  if (e.empty()) return 0.0;
+  std::vector<double> a(e.size());
+  for (std::size_t i = 0; i < e.size(); ++i) a[i] = std::abs(e[i]);
+  const auto mid = a.begin() + std::ptrdiff_t(a.size() / 2);
+  std::nth_element(a.begin(), mid, a.end());
+  return 1.4826 * *mid;
+}
+
+// 2 pi minus the widest angular gap between the given points seen from the centre.
+double arc_coverage(const std::vector<Eigen::Vector2d>& pts, const std::vector<char>& use,
+                    const Eigen::Vector2d& c) {
+  std::vector<double> ang;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    if (use[i]) ang.push_back(std::atan2(pts[i].y() - c.y(), pts[i].x() - c.x()));
+  }
+  if (ang.size() < 2) return 0.0;
+  std::sort(ang.begin(), ang.end());
+  double gap = ang.front() + 2 * M_PI - ang.back();
+  for (std::size_t i = 1; i < ang.size(); ++i) gap = std::max(gap, ang[i] - ang[i - 1]);
+  return 2 * M_PI - gap;
+}
+
+// The circle through three points (invalid when they are nearly collinear).
+CircleFit circle_through(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
+                         const Eigen::Vector2d& c) {
+  CircleFit f;
+  const Eigen::Vector2d ab = b - a, ac = c - a;
+  const double d = 2 * (ab.x() * ac.y() - ab.y() * ac.x());
+  if (!(std::abs(d) > 1e-12 * (ab.squaredNorm() + ac.squaredNorm()))) return f;
+  const Eigen::Vector2d u((ac.y() * ab.squaredNorm() - ab.y() * ac.squaredNorm()) / d,
+                          (ab.x() * ac.squaredNorm() - ac.x() * ab.squaredNorm()) / d);
+  f.centre = a + u;
+  f.radius = u.norm();
+  f.valid = std::isfinite(f.radius);
+  return f;
+}
+
+// Consensus of a candidate: the weight of the points within tau of it, each counted with a
+// truncated quadratic so that the tighter of two circles wins.
+double consensus(const std::vector<Eigen::Vector2d>& pts, const std::vector<double>& w,
+                 const CircleFit& f, double tau) {
+  double score = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double e = ((pts[i] - f.centre).norm() - f.radius) / tau;
+    if (std::abs(e) < 1) score += weight_of(w, i) * (1 - e * e);
+  }
+  return score;
+}
+
+}  // namespace
+
+CircleFit taubin_circle(const std::vector<Eigen::Vector2d>& pts,
+                        const std::vector<double>& weights) {
+  CircleFit f;
+  double sw = 0;
+  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
+  for (std::size_t i = 0; i < pts.size(); ++i)
+    sw += weight_of(weights, i), mean += weight_of(weights, i) * pts[i];
+  if (pts.size() < 3 || !(sw > 0)) return f;
+  mean /= sw;
+  double mxx = 0, myy = 0, mxy = 0, mxz = 0, myz = 0, mzz = 0;
+  for (std::size_t i = 0; i < pts.size(); ++i) {
+    const double w = weight_of(weights, i) / sw;
+    const double x = pts[i].x() - mean.x(), y = pts[i].y() - mean.y(), z = x * x + y * y;
+    mxx += w * x * x, myy += w * y * y, mxy += w * x * y;
+    mxz += w * x * z, myz += w * y * z, mzz += w * z * z;
+  }
+  // Chernov's Newton iteration on Taubin's characteristic polynomial, from x = 0.
+  const double mz = mxx + myy, cov_xy = mxx * myy - mxy * mxy, var_z = mzz - mz * mz;
+  const double a3 = 4 * mz, a2 = -3 * mz * mz - mzz;
+  const double a1 = var_z * mz + 4 * cov_xy * mz - mxz * mxz - myz * myz;
+  const double a0 = mxz * (mxz * myy - myz * mxy) + myz * (myz * mxx - mxz * mxy) - var_z * cov_xy;
+  double x = 0, y = a0;
+  for (int it = 0; it < 99; ++it) {
+    const double dy = a1 + x * (2 * a2 + 3 * a3 * x);
+    const double xn = x - y / dy;
+    if (xn == x || !std::isfinite(xn)) break;
+    const double yn = a0 + xn * (a1 + xn * (a2 + xn * a3));
+    if (std::abs(yn) >= std::abs(y)) break;
+    x = xn, y = yn;
+  }
+  const double det = x * x - x * mz + cov_xy;
+  if (!(std::abs(det) > 0)) return f;
+  const Eigen::Vector2d c((mxz * (myy - x) - myz * mxy) / det / 2,
+                          (myz * (mxx - x) - mxz * mxy) / det / 2);
+  f.centre = c + mean;
+  f.radius = std::sqrt(c.squaredNorm() + mz);
+  f.valid = std::isfinite(f.radius) && std::isfinite(f.centre.x()) && std::isfinite(f.centre.y());
+  return f;
+}
+
+CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<double>& weights,
+                     double noise, int iterations) {
+  // Starts: Taubin's circle through all points, through the half nearest the slab's origin (the
+  // node, which lies on or in the branch it stands for), and through random triples (RANSAC,
+  // Fischler & Bolles 1981): a slab that also cuts a second branch has more than one circle,
+  // and an algebraic fit to both lies between them. The start most points agree with wins.
+  const std::size_t n = pts.size();
+  CircleFit f = taubin_circle(pts, weights);
+  if (n < 3) return f;
+  const double tau = 2.5 * std::max(noise, 1e-12);
+  std::vector<CircleFit> starts{f};
+  {
+    std::vector<std::size_t> idx(n);
+    for (std::size_t i = 0; i < n; ++i) idx[i] = i;
+    std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
+      return pts[a].squaredNorm() < pts[b].squaredNorm();
+    });
+    std::vector<Eigen::Vector2d> near;
+    std::vector<double> near_w;
+    for (std::size_t k = 0; k < std::max<std::size_t>(3, n / 2); ++k) {
+      near.push_back(pts[idx[k]]);
+      if (!weights.empty()) near_w.push_back(weights[idx[k]]);
+    }
+    starts.push_back(taubin_circle(near, near_w));
+  }
+  Rng rng(0x51ab + n);
+  for (int k = 0; k < 16; ++k) {
+    const std::size_t a = rng.below(n), b = rng.below(n), c = rng.below(n);
+    if (a == b || b == c || a == c) continue;
+    starts.push_back(circle_through(pts[a], pts[b], pts[c]));
+  }
+  double best = -1;
+  for (const CircleFit& s : starts) {
+    if (!s.valid) continue;
+    const double score = consensus(pts, weights, s, tau);
+    if (score > best) best = score, f = s;
+  }
+  if (!f.valid) return f;
+  std::vector<double> e(n), rw(n, 1.0);
+  Eigen::Vector2d c = f.centre;
+  double r = f.radius, scale = 0;
+  // The scale comes from the points near the current circle (within 4 tau), so the points of
+  // another branch do not inflate it and turn themselves into inliers.
+  std::vector<double> near_e, near_w;
+  auto residuals = [&] {
+    near_e.clear(), near_w.clear();
+    for (std::size_t i = 0; i < n; ++i) {
+      e[i] = (pts[i] - c).norm() - r;
+      if (std::abs(e[i]) < 4 * tau) near_e.push_back(e[i]), near_w.push_back(weight_of(weights, i));
+    }
+    scale = std::max(near_e.empty() ? tau : robust_scale(near_e, near_w), noise);
+  };
+  residuals();
+  for (int it = 0; it < iterations; ++it) {
+    // Huber for the first third (a convex start), Tukey's biweight after (outliers get weight 0).
+    const bool tukey = it >= iterations / 3;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double u = std::abs(e[i]) / scale;
+      if (tukey) {
+        const double t = u / 4.685;
+        rw[i] = t < 1 ? (1 - t * t) * (1 - t * t) : 0.0;
+      } else {
+        rw[i] = u <= 1.345 ? 1.0 : 1.345 / u;
+      }
+      rw[i] *= weight_of(weights, i);
+    }
+    Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
+    Eigen::Vector3d jte = Eigen::Vector3d::Zero();
+    for (std::size_t i = 0; i < n; ++i) {
+      if (rw[i] <= 0) continue;
+      const Eigen::Vector2d d = pts[i] - c;
+      const double len = d.norm();
+      if (!(len > 0)) continue;
+      const Eigen::Vector3d j(-d.x() / len, -d.y() / len, -1.0);
+      jtj += rw[i] * j * j.transpose();
+      jte += rw[i] * j * e[i];
+    }
+    jtj.diagonal() *= 1.0 + 1e-9;
+    const Eigen::Vector3d step = jtj.ldlt().solve(-jte);
+    if (!step.allFinite()) break;
+    c += step.head<2>();
+    r += step.z();
+    residuals();
+    if (step.norm() < 1e-6 * std::max(r, 1e-9)) break;
+  }
+  // Inliers: within 2.5 robust scales of the circle (Tukey's weight is tiny beyond that).
+  std::vector<char> in(n, 0);
+  std::vector<double> inlier_e;
+  std::vector<double> inlier_w;
+  double win = 0, wall = 0;
+  for (std::size_t i = 0; i < n; ++i) {
+    wall += weight_of(weights, i);
+    if (std::abs(e[i]) <= 2.5 * scale) {
+      in[i] = 1;
+      win += weight_of(weights, i);
+      inlier_e.push_back(e[i]);
+      inlier_w.push_back(weight_of(weights, i));
+    }
+  }
+  f.centre = c;
+  f.radius = std::abs(r);
+  f.residual = inlier_e.empty() ? scale : robust_scale(inlier_e, inlier_w);
+  f.coverage = arc_coverage(pts, in, c);
+  f.inlier_fraction = wall > 0 ? win / wall : 0;
+  f.valid = std::isfinite(f.radius) && c.allFinite() && f.radius > 0;
+  return f;
+}
+
+}  // namespace ramus::bsg

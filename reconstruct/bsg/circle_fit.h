@@ -1,0 +1,37 @@
+// Robust circle fitting in a plane: the cross-section of a branch, as TreeQSM (Raumonen et al.
+// 2013, Remote Sens. 5(2), section 2.3: least-squares cylinders after an algebraic start) and
+// AdTree (Du et al. 2019, Remote Sens. 11(18), section 3.3: radii from fitted cross-sections)
+// fit their cylinders. docs/reconstruction.md, "Centre lines".
+//   1. algebraic start: Taubin's fit (Taubin 1991, IEEE PAMI 13(11); the Newton form of Chernov,
+//      "Circular and linear regression", 2010, ch. 5), which unlike Kasa's is not biased towards
+//      small circles on a partial arc;
+//   2. geometric fit: Gauss-Newton on the distances |p - c| - r, iteratively reweighted (Huber
+//      first, then Tukey's biweight), so that points of another branch in the slab, or the
+//      noise of a rough bark, do not pull the circle.
+#pragma once
+
+#include <Eigen/Core>
+#include <vector>
+
+namespace ramus::bsg {
+
+struct CircleFit {
+  Eigen::Vector2d centre = Eigen::Vector2d::Zero();
+  double radius = 0;
+  double residual = 0;  // robust scale (1.4826 MAD) of the inliers' distances to the circle
+  double coverage = 0;  // angle (radians) of the arc the inliers cover: 2 pi minus the widest gap
+  double inlier_fraction = 0;  // weight share of the points with a non-zero final Tukey weight
+  bool valid = false;          // finite and non-degenerate
+};
+
+// Taubin's algebraic circle through weighted points (weights may be empty: all 1).
+CircleFit taubin_circle(const std::vector<Eigen::Vector2d>& pts,
+                        const std::vector<double>& weights);
+
+// The robust geometric fit, started from Taubin's. `noise` floors the residual scale (the range
+// noise of the scanner, or a fraction of the point spacing): without it, a near-perfect arc would
+// make every point but the best few an outlier.
+CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<double>& weights,
+                     double noise, int iterations = 12);
+
+}  // namespace ramus::bsg

@@ -1,0 +1,145 @@
+// Centre lines (reconstruct/bsg/centre_line.h, circle_fit.h): the circle fit on full and partial
+// arcs with outliers, and skeleton nodes put on the bark of a scanned thick tree coming back to
+// its axis.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "backends/scanner/scanner.h"
+#include "core/rng.h"
+#include "reconstruct/bsg/centre_line.h"
+#include "reconstruct/bsg/circle_fit.h"
+#include "tests/reconstruct/reconstruct_fixtures.h"
+#include "tests/support/harness.h"
+
+using namespace ramus;
+
+namespace {
+
+// Points on an arc of `span` radians of the circle (c, r), with radial noise, plus outliers.
+std::vector<Eigen::Vector2d> arc(Eigen::Vector2d c, double r, double span, int n, double noise,
+                                 int outliers, std::uint64_t seed) {
+  Rng rng(seed);
+  std::vector<Eigen::Vector2d> pts;
+  for (int i = 0; i < n; ++i) {
+    const double a = rng.uniform(-span / 2, span / 2), rr = r + rng.normal(0, noise);
+    pts.emplace_back(c.x() + rr * std::cos(a), c.y() + rr * std::sin(a));
+  }
+  for (int i = 0; i < outliers; ++i) {
+    pts.emplace_back(c.x() + rng.uniform(-2 * r, 3 * r), c.y() + rng.uniform(-2 * r, 2 * r));
+  }
+  return pts;
+}
+
+}  // namespace
+
+TEST_CASE("circle fit: full, half and quarter arcs with noise", "[centre_line]") {
+  const Eigen::Vector2d c(1.5, -0.7);
+  for (double span : {2 * M_PI, M_PI, M_PI / 2}) {
+    for (double r : {0.05, 0.3, 0.6}) {
+      const auto pts = arc(c, r, span, 200, 0.005, 0, 3);
+      const bsg::CircleFit f = bsg::fit_circle(pts, {}, 0.0025);
+      INFO("span " << span << " r " << r << ": fitted " << f.radius << " centre error "
+                   << (f.centre - c).norm());
+      REQUIRE(f.valid);
+      // A quarter arc of a 5 cm circle with 5 mm noise is the hardest: 0.25 r.
+      CHECK((f.centre - c).norm() <= (span > 2 ? 0.05 : 0.25) * r + 0.002);
+      CHECK(std::abs(f.radius - r) <= (span > 2 ? 0.05 : 0.25) * r + 0.002);
+      CHECK(f.coverage >= 0.9 * span - 0.1);
+    }
+  }
+}
+
+TEST_CASE("circle fit: a third of the points from another branch do not pull it", "[centre_line]") {
+  const Eigen::Vector2d c(0, 0);
+  auto pts = arc(c, 0.3, M_PI, 300, 0.004, 0, 5);
+  // A thinner branch beside it: a tight cluster of points 0.5 m away.
+  const auto other = arc({0.5, 0.3}, 0.06, 2 * M_PI, 150, 0.004, 0, 6);
+  pts.insert(pts.end(), other.begin(), other.end());
+  const bsg::CircleFit taubin = bsg::taubin_circle(pts, {});
+  const bsg::CircleFit f = bsg::fit_circle(pts, {}, 0.002);
+  INFO("Taubin centre error " << taubin.centre.norm() << ", robust " << f.centre.norm());
+  CHECK(f.centre.norm() < 0.03);
+  CHECK(std::abs(f.radius - 0.3) < 0.03);
+  CHECK(f.inlier_fraction < 0.8);
+}
+
+TEST_CASE("circle fit: degenerate input is invalid, never NaN", "[centre_line]") {
+  CHECK_FALSE(bsg::fit_circle({}, {}, 0.01).valid);
+  CHECK_FALSE(bsg::fit_circle({{0, 0}, {1, 1}}, {}, 0.01).valid);
+  std::vector<Eigen::Vector2d> line;
+  for (int i = 0; i < 50; ++i) line.emplace_back(0.01 * i, 0.02 * i);
+  const bsg::CircleFit f = bsg::fit_circle(line, {}, 0.001);
+  CHECK((!f.valid || std::isfinite(f.radius)));
+  std::vector<Eigen::Vector2d> same(30, Eigen::Vector2d(1, 1));
+  CHECK_FALSE(bsg::fit_circle(same, {}, 0.001).valid);
+}
+
+namespace {
+
+double segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
+  const Vec3 ab = b - a;
+  const double l2 = dot(ab, ab);
+  const double t = l2 > 0 ? std::clamp(dot(p - a, ab) / l2, 0.0, 1.0) : 0.0;
+  return distance(p, a + ab * t);
+}
+
+double axis_distance(const Skeleton& s, std::uint32_t v, const Vec3& p) {
+  double d = distance(p, s.nodes[v].position);
+  if (s.nodes[v].parent != kNoParent)
+    d = std::min(d, segment_distance(p, s.nodes[s.nodes[v].parent].position, s.nodes[v].position));
+  for (std::uint32_t c = 0; c < s.size(); ++c) {
+    if (s.nodes[c].parent == v)
+      d = std::min(d, segment_distance(p, s.nodes[v].position, s.nodes[c].position));
+  }
+  return d;
+}
+
+// The truth's nodes moved onto the bark (by their radius, sideways), re-centred against a scan.
+// Returns the median of |centred - truth| / radius over nodes of radius >= 5 cm, and the share
+// of those nodes fitted.
+std::pair<double, double> recentre_truth(int stations) {
+  const Skeleton truth = test::thick_tree(5, 8.0, 0.3);
+  scanner::ScanOptions so;
+  so.from = scanner::stations_around(truth, stations);
+  so.noise = 0.005;
+  so.density = 1500;
+  const scanner::ScanResult scan = scanner::scan_skeleton(truth, so);
+  std::vector<Eigen::Vector3d> points;
+  for (const Vec3f& p : scan.cloud.positions) {
+    const Vec3 q = scan.cloud.offset + Vec3(p);
+    points.emplace_back(q.x, q.y, q.z);
+  }
+  Skeleton moved = truth;
+  // Towards the station of a one-sided scan (-y): the node lies on the visible bark.
+  for (SkeletonNode& n : moved.nodes) n.position.y -= n.radius, n.radius *= 0.5;
+  bsg::CentreLineParams p;
+  p.spacing = 1 / std::sqrt(so.density);
+  bsg::centre_skeleton(moved, points, p);
+  std::vector<double> rel;
+  std::size_t thick = 0;
+  for (std::size_t i = 0; i < truth.size(); ++i) {
+    if (truth.nodes[i].radius < 0.05) continue;
+    ++thick;
+    // The fit moves a node across its branch, not along it: the error is the distance to the
+    // truth's axis (the segments at the node).
+    rel.push_back(axis_distance(truth, std::uint32_t(i), moved.nodes[i].position) /
+                  truth.nodes[i].radius);
+  }
+  std::sort(rel.begin(), rel.end());
+  std::size_t within = 0;
+  for (double e : rel) within += e < 0.5;
+  return {rel[rel.size() / 2], double(within) / double(thick)};
+}
+
+}  // namespace
+
+TEST_CASE("centre line: nodes on the bark of a scanned thick tree move to its axis",
+          "[centre_line]") {
+  for (int stations : {3, 1}) {
+    const auto [median, within] = recentre_truth(stations);
+    INFO(stations << " stations: median error / radius " << median << ", within 0.5 r " << within);
+    CHECK(median <= 0.15);
+    CHECK(within >= 0.7);
+  }
+}
