@@ -375,7 +375,7 @@ TEST_CASE("abop: the turtle's polygons of fig 5.5 and the lily of the valley", "
   }
 }
 
-TEST_CASE("abop: ramus check exits 1 on a ] that closes no branch", "[abop]") {
+TEST_CASE("abop: ramus check exits 1 on a closing bracket that closes no branch", "[abop]") {
   const fs::path dir = fs::path(RAMUS_BINARY_DIR) / "abop_conformance";
   fs::create_directories(dir);
   const std::string bad = (dir / "stray_pop.ramus").string();

@@ -99,7 +99,7 @@ TEST_CASE("polygons: a } or . without a polygon, or a { never closed, is an erro
         std::string::npos);
 }
 
-TEST_CASE("brackets: a ] with no open branch stops derivation, naming step and production",
+TEST_CASE("brackets: a closing bracket with no open branch stops derivation, naming step and production",
           "[derive][brackets]") {
   ir::Grammar g = grammar_of("lsystem s { derive 2; axiom F; F -> F[+F]F; }");
   CHECK_FALSE(may_unbalance_branches(g, ir::Kind::Rewrite));
