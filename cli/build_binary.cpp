@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "backends/pieces/pieces.h"
 #include "cli/grow_args.h"
 #include "cli/read_file.h"
 #include "core/atomic_file.h"
@@ -117,7 +118,12 @@ int build_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::st
     if (!*ok) return 1;
     lowered = ir::make_grammar("");
   } else {
-    lowered = lower_for_cli(a);
+    // A file whose lsystem is imported for a pieces block's `skeleton` stores that lsystem.
+    GrowArgs args = a;
+    if (args.system.empty() && !program.files.empty()) {
+      args.system = pieces::pieces_skeleton_system(program, "");
+    }
+    lowered = lower_for_cli(args);
     if (!lowered) return 1;
     if (a.steps) lowered->settings.derive = *a.steps;
     // The same bytes from any working directory and any checkout (formats/rmb/rmb_paths.h).

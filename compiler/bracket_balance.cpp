@@ -1,7 +1,5 @@
 #include "compiler/bracket_balance.h"
 
-#include "compiler/derive.h"
-
 namespace ramus {
 
 namespace {
@@ -49,25 +47,25 @@ std::string list(const ir::Grammar& g, ir::TurtleOp open, ir::TurtleOp close, bo
 
 bool may_unbalance_branches(const ir::Grammar& g, ir::Kind kind) {
   for (const ir::Production& p : g.productions) {
-    if (p.kind == kind &&
-        production_unbalanced(g, p, ir::TurtleOp::Push, ir::TurtleOp::Pop)) {
+    if (p.kind == kind && production_unbalanced(g, p, ir::TurtleOp::Push, ir::TurtleOp::Pop)) {
       return true;
     }
   }
   return false;
 }
 
-void check_branches(const ir::Grammar& g, const ModuleString& s, ir::Kind kind,
-                    const std::string& where) {
+std::string unclosed_branch_error(const ir::Grammar& g, const ModuleString& s, ir::Kind kind,
+                                  const std::string& where) {
   std::size_t depth = 0;
   for (std::size_t i = 0; i < s.size(); ++i) {
     const ir::SymbolId sym = s.symbol(i);
     if (sym == ir::kPush) ++depth;
     if (sym != ir::kPop) continue;
     if (depth-- > 0) continue;
-    throw DeriveError(where + ": `]` at module " + std::to_string(i) + " closes no branch" +
-                      list(g, ir::TurtleOp::Push, ir::TurtleOp::Pop, false, kind));
+    return where + ": `]` at module " + std::to_string(i) + " closes no branch" +
+           list(g, ir::TurtleOp::Push, ir::TurtleOp::Pop, false, kind);
   }
+  return {};
 }
 
 std::string unbalanced_productions(const ir::Grammar& g, ir::SymbolId symbol) {

@@ -16,10 +16,11 @@ namespace ramus {
 // balanced: the engine then skips the scan).
 bool may_unbalance_branches(const ir::Grammar& g, ir::Kind kind);
 
-// Throws DeriveError when a `]` of `s` closes no branch, naming `where` ("step 3", "the axiom")
-// and the productions of `kind` that write an unmatched `]`.
-void check_branches(const ir::Grammar& g, const ModuleString& s, ir::Kind kind,
-                    const std::string& where);
+// What is wrong when a `]` of `s` closes no branch, naming `where` ("step 3", "the axiom") and
+// the productions of `kind` that write an unmatched `]`; empty when every `]` closes a branch.
+// (The engine throws it as a DeriveError.)
+std::string unclosed_branch_error(const ir::Grammar& g, const ModuleString& s, ir::Kind kind,
+                                  const std::string& where);
 
 // " -- written by production `...` (file:line:col)" for the productions (of any kind) whose
 // successor holds an unmatched closing `symbol` (`]` or `}`); empty when none does.

@@ -327,6 +327,12 @@ bool apply_cut(ModuleString& s) {
   return true;
 }
 
+void check_branches(const ir::Grammar& g, const ModuleString& s, ir::Kind kind,
+                    const std::string& where) {
+  std::string error = unclosed_branch_error(g, s, kind, where);
+  if (!error.empty()) throw DeriveError(error);
+}
+
 ModuleString axiom_string(const ir::Grammar& g) {
   ModuleString s;
   for (const ir::SuccModule& m : g.axiom) {

@@ -385,6 +385,7 @@ TEST_CASE("abop: ramus check exits 1 on a closing bracket that closes no branch"
   }
   Run check = ramus({"check", bad});
   CHECK(check.status == 1);
-  CHECK(check.out.find(":1:43: error[E0309]: ']' closes no branch") != std::string::npos);
-  CHECK(check.out.find("error[E0309]: '[' opens a branch that is never closed") != std::string::npos);
+  CHECK(check.out.find(":1:46: error[E0309]: ']' closes no branch") != std::string::npos);
+  CHECK(check.out.find("error[E0309]: '[' opens a branch that is never closed") !=
+        std::string::npos);
 }

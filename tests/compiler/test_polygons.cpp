@@ -46,8 +46,7 @@ TEST_CASE("polygons: . records, G moves without recording, f records inside a po
   // must add no vertex.
   for (const char* axiom : {"{.f+.f+.f+.}", "{f+f+f+f}", "{.G+.f+.f+.}"}) {
     INFO(axiom);
-    const Skeleton sk =
-        skeleton_of(std::string("lsystem s { angle 90; axiom ") + axiom + "; }", 0);
+    const Skeleton sk = skeleton_of(std::string("lsystem s { angle 90; axiom ") + axiom + "; }", 0);
     REQUIRE(sk.organs.size() == 1);
     const auto& v = sk.organs[0].vertices;
     REQUIRE(v.size() == 4);
@@ -99,8 +98,9 @@ TEST_CASE("polygons: a } or . without a polygon, or a { never closed, is an erro
         std::string::npos);
 }
 
-TEST_CASE("brackets: a closing bracket with no open branch stops derivation, naming step and production",
-          "[derive][brackets]") {
+TEST_CASE(
+    "brackets: a closing bracket with no open branch stops derivation, naming step and production",
+    "[derive][brackets]") {
   ir::Grammar g = grammar_of("lsystem s { derive 2; axiom F; F -> F[+F]F; }");
   CHECK_FALSE(may_unbalance_branches(g, ir::Kind::Rewrite));
   for (ir::SuccModule& m : g.successors) {
@@ -108,15 +108,17 @@ TEST_CASE("brackets: a closing bracket with no open branch stops derivation, nam
   }
   CHECK(may_unbalance_branches(g, ir::Kind::Rewrite));
   const std::string e = error_of([&] { derive_of(g, 2); });
+  INFO(e);
   CHECK(e.find("step 1: `]` at module 1 closes no branch") != std::string::npos);
-  CHECK(e.find("written by production `F -> F[+F]F;` (test.ramus:1:37)") != std::string::npos);
+  CHECK(e.find("written by production `F -> F[+F]F;` (test.ramus:1:32)") != std::string::npos);
   // The axiom too.
   ir::Grammar a = grammar_of("lsystem s { axiom F[F]; }");
   a.axiom[1].symbol = ir::kPop;
   CHECK(error_of([&] { derive_of(a, 0); }).find("the axiom: `]` at module 1 closes no branch") !=
         std::string::npos);
-  // And the turtle, for a string that reaches it unbalanced.
+  // And the turtle itself, for a string given to it unbalanced.
   ir::Grammar t = grammar_of("lsystem s { axiom F[+F]; }");
   t.axiom[1].symbol = ir::SymbolId(ir::TurtleOp::Forward);
-  CHECK(error_of([&] { skeleton_of_grammar(t); }).find("`]` closes no branch") != std::string::npos);
+  const std::string te = error_of([&] { run_turtle(t, axiom_string(t)); });
+  CHECK(te.find("interpretation: `]` closes no branch (module 4)") != std::string::npos);
 }
