@@ -107,8 +107,9 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
       const std::string named = pieces::pieces_skeleton_system(program, a.block);
       if (!named.empty()) {
         if (!grow.system.empty() && grow.system != named) {
-          throw UserError("--system " + grow.system + ": the pieces block is fitted to the lsystem '" +
-                          named + "' (its 'skeleton' setting)");
+          throw UserError("--system " + grow.system +
+                          ": the pieces block is fitted to the lsystem '" + named +
+                          "' (its 'skeleton' setting)");
         }
         fit_options.system = named;
       }

@@ -1,8 +1,9 @@
 // ramus preview FILE -o OUT.png|.svg [--size WxH] [-n N] [--seed S] [-D name=value]...
 //                    [--system NAME] [--pipe-exponent E]
 // A picture from the front and from the side (docs/mesh.md, "Preview") of what FILE holds: a
-// grammar (.ramus, or an .rmb decoded as the runtime decodes it) grown into its tree, a skeleton (.json) meshed
-// as `ramus build` meshes it, a mesh (.glb .gltf .obj .ply) as the file has it, or a scan
+// grammar (.ramus, or an .rmb decoded as the runtime decodes it) grown into its tree, a skeleton
+// (.json) meshed as `ramus build` meshes it, a mesh (.glb .gltf .obj .ply) as the file has it, or a
+// scan
 // (.ply .xyz .txt .asc .csv .las .pcd) as points. Options that cannot apply to FILE's kind are
 // errors rather than silently ignored, so a user who asks for a seed learns it changed nothing.
 #include <cstdio>

@@ -198,7 +198,8 @@ class Reader {
     }
     if (auto* vs = v.find("vertices")) {
       expect_kind(*vs, JsonValue::Kind::kArray, path + ".vertices");
-      if (vs->items.size() < 3) error(*vs, path + ".vertices", "a polygon needs 3 or more vertices");
+      if (vs->items.size() < 3)
+        error(*vs, path + ".vertices", "a polygon needs 3 or more vertices");
       for (std::size_t i = 0; i < vs->items.size(); ++i) {
         o.vertices.push_back(vec3(vs->items[i], path + ".vertices[" + std::to_string(i) + "]"));
       }

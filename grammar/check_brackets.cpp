@@ -45,7 +45,8 @@ std::string rule_name(const Rule& r) { return r.axiom ? "the axiom" : "this prod
 void check_brackets(CheckContext& cx, const ast::LSystem& ls) {
   std::vector<Rule> rules;
   for (const ast::LSystemItem& item : ls.items) {
-    if (const auto* a = std::get_if<ast::Axiom>(&item)) rules.push_back({&a->modules, a->span, true});
+    if (const auto* a = std::get_if<ast::Axiom>(&item))
+      rules.push_back({&a->modules, a->span, true});
     if (const auto* p = std::get_if<ast::Production>(&item)) {
       for (const ast::Alternative& alt : p->alternatives) {
         rules.push_back({&alt.successor, p->span, false});

@@ -216,8 +216,9 @@ class PiecesChecker {
     }
     for (const ast::PiecesItem& item : ps_.items) {
       if (const auto* rule = std::get_if<ast::AttachRule>(&item)) {
-        cx_.error(DiagCode::InvalidPieceSetting, v.span,
-                  "'skeleton' fits the pieces to a grown tree, but the block also has attach rules");
+        cx_.error(
+            DiagCode::InvalidPieceSetting, v.span,
+            "'skeleton' fits the pieces to a grown tree, but the block also has attach rules");
         cx_.note(rule->span, "the first attach rule");
         return;
       }

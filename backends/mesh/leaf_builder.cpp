@@ -1,7 +1,7 @@
-// Organ geometry: leaf cards at organ anchors, and the turtle's polygons. Cards: A card of length `size` runs along the anchor's heading H from the
-// anchor point, its width along L, so the leaf faces U (the turtle's up). Every card gets a front
-// and a back face with opposite normals: engines can then keep the leaf material single-sided
-// and still light both sides correctly.
+// Organ geometry: leaf cards at organ anchors, and the turtle's polygons. Cards: A card of length
+// `size` runs along the anchor's heading H from the anchor point, its width along L, so the leaf
+// faces U (the turtle's up). Every card gets a front and a back face with opposite normals: engines
+// can then keep the leaf material single-sided and still light both sides correctly.
 #include <algorithm>
 #include <cmath>
 

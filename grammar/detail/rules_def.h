@@ -381,8 +381,8 @@ x3::rule<struct pattern_seq_class, std::vector<ast::ModulePattern>> const patter
 // followed by the end of the file or a declaration keyword closes the block, so that a missing
 // `;` before the block's `}` is still reported as one -- the polygon `}` of ABOP 5.2 is always
 // followed by more modules or the production's `;`)
-auto const decl_keyword = kw("lsystem") | kw("pieces") | kw("voxels") | kw("import") |
-                          kw("const") | kw("param") | kw("module");
+auto const decl_keyword = kw("lsystem") | kw("pieces") | kw("voxels") | kw("import") | kw("const") |
+                          kw("param") | kw("module");
 auto const module_name_def = ident[assign] | raw[char_("+&^\\/$[]!'~%{.")][assign_range] |
                              raw[lexeme[lit('-') >> !lit('>')]][assign_range] |
                              (lit('|') >> !lit('('))[([](auto& c) { _val(c) = "|"; })] |

@@ -14,7 +14,8 @@ namespace {
 double area(const std::vector<Vec3>& v, const PolygonTriangles& t) {
   double a = 0;
   for (std::size_t k = 0; k + 2 < t.indices.size(); k += 3) {
-    a += length(cross(v[t.indices[k + 1]] - v[t.indices[k]], v[t.indices[k + 2]] - v[t.indices[k]])) /
+    a += length(
+             cross(v[t.indices[k + 1]] - v[t.indices[k]], v[t.indices[k + 2]] - v[t.indices[k]])) /
          2;
   }
   return a;
