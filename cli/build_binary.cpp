@@ -3,6 +3,9 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "backends/pieces/pieces.h"
+#include "cli/grow_args.h"
+#include "cli/read_file.h"
 #include "core/atomic_file.h"
 #include "formats/rmb/rmb.h"
 #include "grammar/check.h"
@@ -54,6 +57,51 @@ std::optional<bool> check_pieces_only(const Program& program, const SourceManage
   return !diags.has_errors();
 }
 
+RmbEncodeOptions encode_options(const BinaryBuildArgs& binary) {
+  RmbEncodeOptions options;
+  options.tolerance = binary.tolerance;
+  options.zstd = binary.zstd;
+  options.strip = binary.strip;
+  options.version = binary.version;
+  return options;
+}
+
+void report(const std::string& output, const std::string& bytes, const ir::Grammar& g,
+            std::size_t piece_sets, bool quiet) {
+  if (quiet) return;
+  std::fprintf(stderr,
+               "ramus: wrote %s (%zu bytes: %zu symbols, %zu productions, %zu pieces blocks)\n",
+               output.c_str(), bytes.size(), g.symbols.size(), g.productions.size(), piece_sets);
+}
+
+// An .rmb in, an .rmb out: everything it holds (lsystem, piece sets, voxel tables) re-encoded
+// with this build's options (--zstd, --strip, --tolerance, --rmb-version), -n and --seed stored
+// as the new defaults.
+int rebuild_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::string& output,
+                   bool quiet) {
+  if (!a.defines.empty()) {
+    throw UserError("-D/--define needs the grammar's source; " + a.file +
+                    " is a compiled binary grammar");
+  }
+  if (!a.system.empty()) throw UserError("--system does not apply to an .rmb input");
+  if (binary.mesh_paths) {
+    throw UserError("--mesh-paths applies to a grammar's mesh files; " + a.file +
+                    " already holds its pieces as compiled");
+  }
+  std::string bytes;
+  try {
+    RmbContents c = decode_rmb_contents(read_file_bytes(a.file));
+    if (a.steps) c.grammar.settings.derive = *a.steps;
+    if (a.seed) c.grammar.settings.seed = *a.seed;
+    bytes = encode_rmb(c.grammar, c.voxels, c.pieces, encode_options(binary));
+    write_file_atomically(output, bytes);
+    report(output, bytes, c.grammar, c.pieces.sets.size(), quiet);
+  } catch (const RmbError& e) {
+    throw UserError(a.file + ": " + e.what());
+  }
+  return 0;
+}
+
 }  // namespace
 
 int build_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::string& output,
@@ -61,6 +109,7 @@ int build_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::st
   if (std::filesystem::path(output).extension() != ".rmb") {
     throw UserError("--target binary writes an .rmb file, not " + output);
   }
+  if (is_binary_grammar(a.file)) return rebuild_binary(a, binary, output, quiet);
   SourceManager sm;
   DiagnosticSink diags;
   const Program program = load_program(a.file, sm, diags);
@@ -69,18 +118,19 @@ int build_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::st
     if (!*ok) return 1;
     lowered = ir::make_grammar("");
   } else {
-    lowered = lower_for_cli(a);
+    // A file whose lsystem is imported for a pieces block's `skeleton` stores that lsystem.
+    GrowArgs args = a;
+    if (args.system.empty() && !program.files.empty()) {
+      args.system = pieces::pieces_skeleton_system(program, "");
+    }
+    lowered = lower_for_cli(args);
     if (!lowered) return 1;
     if (a.steps) lowered->settings.derive = *a.steps;
     // The same bytes from any working directory and any checkout (formats/rmb/rmb_paths.h).
     make_locations_portable(*lowered, a.file, default_stdlib_dirs());
   }
   const ir::Grammar& g = *lowered;
-  RmbEncodeOptions options;
-  options.tolerance = binary.tolerance;
-  options.zstd = binary.zstd;
-  options.strip = binary.strip;
-  options.version = binary.version;
+  const RmbEncodeOptions options = encode_options(binary);
   // The pieces blocks (section 10) and voxels blocks (section 11) of the root file go along.
   RmbPiecesOptions pieces_options;
   pieces_options.defines = to_grow_options(a).defines;
@@ -98,11 +148,7 @@ int build_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::st
     throw UserError(a.file + ": " + e.what());
   }
   write_file_atomically(output, bytes);
-  if (!quiet) {
-    std::fprintf(
-        stderr, "ramus: wrote %s (%zu bytes: %zu symbols, %zu productions, %zu pieces blocks)\n",
-        output.c_str(), bytes.size(), g.symbols.size(), g.productions.size(), pieces.sets.size());
-  }
+  report(output, bytes, g, pieces.sets.size(), quiet);
   return 0;
 }
 

@@ -76,6 +76,10 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
     const std::string pe = std::filesystem::path(a.preview).extension().string();
     if (pe != ".png" && pe != ".svg") throw UserError("--preview must end in .png or .svg");
   }
+  if (is_binary_grammar(grow.file)) {
+    throw UserError("--target pieces reads the pieces block from the grammar's source; " +
+                    grow.file + " is a compiled binary grammar (build pieces from the .ramus)");
+  }
   const GrowOptions grow_options = to_grow_options(grow);
   SourceManager sources;
   DiagnosticSink diags;
@@ -102,8 +106,18 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
     if (pieces::pieces_block_fits_skeleton(program, a.block)) {
       // The program is loaded and checked above; only the lsystem block is lowered and grown.
       Skeleton skeleton;
+      GrowOptions fit_options = grow_options;
+      const std::string named = pieces::pieces_skeleton_system(program, a.block);
+      if (!named.empty()) {
+        if (!grow.system.empty() && grow.system != named) {
+          throw UserError("--system " + grow.system +
+                          ": the pieces block is fitted to the lsystem '" + named +
+                          "' (its 'skeleton' setting)");
+        }
+        fit_options.system = named;
+      }
       try {
-        skeleton = grow_checked(program, grow_options, sources, diags);
+        skeleton = grow_checked(program, fit_options, sources, diags);
       } catch (const GrowError& e) {
         print_diagnostics(sources, diags);
         if (!diags.has_errors()) throw UserError(e.what());

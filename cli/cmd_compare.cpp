@@ -1,11 +1,12 @@
 // ramus compare A B [--seeds N] [--seed S] [--tree-index T] [--reconstruct bsg|flood] [--voxel V]
 //                   [--picture OUT.png [--picture-also C]...]
-// Compares the skeletons of two sources -- grammars (.ramus, grown over N seeds), skeleton files
-// (.json) or scans (reconstructed). First the shape of B's trees against A: envelope IoU (with
-// the reconstruction's own as the reference line when A is a scan), pieces, axis-locked share,
-// height ratio and trunk lean (docs/shape-measures.md); then the two-sample Kolmogorov-Smirnov
-// distance of their distributions of branch length, branching angle, azimuth, radius ratio,
-// branch order, total length, crown extent and height (docs/skeleton-inference.md, "Fidelity").
+// Compares the skeletons of two sources -- grammars (.ramus or .rmb, grown over N seeds),
+// skeleton files (.json) or scans (reconstructed). First the shape of B's trees against A:
+// envelope IoU (with the reconstruction's own as the reference line when A is a scan), pieces,
+// axis-locked share, height ratio and trunk lean (docs/shape-measures.md); then the two-sample
+// Kolmogorov-Smirnov distance of their distributions of branch length, branching angle, azimuth,
+// radius ratio, branch order, total length, crown extent and height (docs/skeleton-inference.md,
+// "Fidelity").
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -52,7 +53,8 @@ void check_options(const CompareArgs& args) {
   const SourceKind ka = source_kind(args.a), kb = source_kind(args.b);
   auto any = [&](SourceKind k) { return ka == k || kb == k; };
   if (args.given_seeds && !any(SourceKind::Grammar)) {
-    throw UserError("--seeds and --seed grow grammars, and neither source is a grammar (.ramus)");
+    throw UserError(
+        "--seeds and --seed grow grammars, and neither source is a grammar (.ramus or .rmb)");
   }
   if (args.given_scan_options && !any(SourceKind::Scan)) {
     throw UserError(

@@ -1,8 +1,9 @@
 // ramus preview FILE -o OUT.png|.svg [--size WxH] [-n N] [--seed S] [-D name=value]...
 //                    [--system NAME] [--pipe-exponent E]
 // A picture from the front and from the side (docs/mesh.md, "Preview") of what FILE holds: a
-// grammar (.ramus, or an .rmb decompiled to one) grown into its tree, a skeleton (.json) meshed
-// as `ramus build` meshes it, a mesh (.glb .gltf .obj .ply) as the file has it, or a scan
+// grammar (.ramus, or an .rmb decoded as the runtime decodes it) grown into its tree, a skeleton
+// (.json) meshed as `ramus build` meshes it, a mesh (.glb .gltf .obj .ply) as the file has it, or a
+// scan
 // (.ply .xyz .txt .asc .csv .las .pcd) as points. Options that cannot apply to FILE's kind are
 // errors rather than silently ignored, so a user who asks for a seed learns it changed nothing.
 #include <cstdio>
@@ -60,20 +61,6 @@ void check_options(const PreviewArgs& a, PreviewInput kind) {
   }
 }
 
-// An .rmb grows as the grammar it decompiles to (docs/binary-format.md, Decompiling: the text
-// derives the same string for the same seed), so -n, --seed, -D and --system work as on .ramus.
-std::optional<Skeleton> grow_binary(const GrowArgs& a) {
-  std::string text;
-  try {
-    text = decompile(decode_rmb_contents(read_file_bytes(a.file)));
-  } catch (const RmbError& e) {
-    throw UserError(a.file + ": " + e.what());
-  } catch (const DecompileError& e) {
-    throw UserError(a.file + ": cannot decompile: " + e.what());
-  }
-  return grow_text_for_cli(a, text);
-}
-
 // The tree mesh of a grown or read skeleton, as `ramus build` makes LOD0.
 mesh::TreeMesh mesh_skeleton(const Skeleton& skeleton, const PreviewArgs& a, bool svg) {
   mesh::MeshOptions o;
@@ -108,7 +95,7 @@ int run_preview(const PreviewArgs& a, const GlobalOptions& global) {
         if (kind == PreviewInput::kSkeleton) {
           skeleton = read_skeleton_json(a.grow.file);
         } else {
-          skeleton = kind == PreviewInput::kGrammar ? grow_for_cli(a.grow) : grow_binary(a.grow);
+          skeleton = grow_for_cli(a.grow);  // a .ramus, or an .rmb as the runtime derives it
           if (!skeleton) return 1;
         }
         m = mesh_skeleton(*skeleton, a, svg);

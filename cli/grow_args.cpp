@@ -1,9 +1,12 @@
 #include "cli/grow_args.h"
 
 #include <cstdio>
+#include <fstream>
 
 #include "cli/defines.h"
+#include "cli/read_file.h"
 #include "compiler/pipeline.h"
+#include "formats/rmb/rmb_codec.h"
 
 namespace ramus::cli {
 
@@ -28,10 +31,38 @@ std::optional<Result> run_reporting(const GrowArgs& a, const Step& step) {
   }
 }
 
+// The lsystem of an .rmb as the runtime loads it (runtime/ramus_runtime.cpp): decoded, with the
+// seed override in its settings, so the axiom's arguments and every pass draw from that seed.
+ir::Grammar load_binary_grammar(const GrowArgs& a) {
+  if (!a.defines.empty()) {
+    throw UserError("-D/--define needs the grammar's source; " + a.file +
+                    " is a compiled binary grammar (define the param when building it)");
+  }
+  ir::Grammar g;
+  try {
+    g = decode_rmb(read_file_bytes(a.file));
+  } catch (const RmbError& e) {
+    throw UserError(a.file + ": " + e.what());
+  }
+  if (!rmb_has_lsystem(g)) throw UserError(a.file + " holds no lsystem block (only pieces)");
+  if (!a.system.empty() && a.system != g.name) {
+    throw UserError("--system " + a.system + ": " + a.file + " holds the lsystem '" + g.name +
+                    "' only");
+  }
+  if (a.seed) g.settings.seed = *a.seed;
+  return g;
+}
+
 }  // namespace
 
+bool is_binary_grammar(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  char head[4] = {};
+  return in.read(head, 4) && std::string_view(head, 4) == std::string_view("RMB\x1a", 4);
+}
+
 void add_grow_options(CLI::App* sub, GrowArgs& a) {
-  sub->add_option("file", a.file, "grammar file (.ramus)")->required();
+  sub->add_option("file", a.file, "grammar file (.ramus, or a binary grammar .rmb)")->required();
   sub->add_option("-n,--steps", a.steps, "derivation steps (default: the grammar's derive)")
       ->check(CLI::NonNegativeNumber);
   sub->add_option("--seed", a.seed, "random seed (default: the grammar's seed)");
@@ -51,18 +82,19 @@ GrowOptions to_grow_options(const GrowArgs& a) {
 }
 
 std::optional<ir::Grammar> lower_for_cli(const GrowArgs& a) {
+  if (is_binary_grammar(a.file)) return load_binary_grammar(a);
   return run_reporting<ir::Grammar>(a, &lower_file);
 }
 
 std::optional<Skeleton> grow_for_cli(const GrowArgs& a) {
+  if (is_binary_grammar(a.file)) {
+    try {
+      return grow_grammar(load_binary_grammar(a), to_grow_options(a));
+    } catch (const GrowError& e) {
+      throw UserError(e.what());
+    }
+  }
   return run_reporting<Skeleton>(a, &grow_file);
-}
-
-std::optional<Skeleton> grow_text_for_cli(const GrowArgs& a, const std::string& text) {
-  return run_reporting<Skeleton>(
-      a, [&](const std::string& name, const GrowOptions& o, SourceManager& s, DiagnosticSink& d) {
-        return grow_text(name, text, o, s, d);
-      });
 }
 
 void print_diagnostics(const SourceManager& sources, DiagnosticSink& diags) {

@@ -28,15 +28,19 @@ void add_grow_options(CLI::App* sub, GrowArgs& args);
 // The options as the pipeline takes them (-D parsed; throws UserError on a malformed one).
 GrowOptions to_grow_options(const GrowArgs& args);
 
-// Loads, checks and lowers the grammar. Diagnostics are handled as by grow_for_cli.
+// Whether `path` is a binary grammar: its first bytes are the .rmb signature, whatever its name.
+bool is_binary_grammar(const std::string& path);
+
+// Loads, checks and lowers the grammar; or, for an .rmb, decodes its lsystem (the grammar the
+// runtime derives, bit for bit), with --seed applied as the runtime applies it. Options that need
+// the source (-D) or another block than the one stored (--system) are UserErrors for an .rmb.
+// Diagnostics are handled as by grow_for_cli.
 std::optional<ir::Grammar> lower_for_cli(const GrowArgs& args);
 
-// Grows the grammar. On errors in the grammar prints the diagnostics to stderr and returns
-// nullopt (the caller exits with 1); warnings are printed and growing goes on. Derivation
-// failures throw UserError.
+// Grows the grammar (.ramus or .rmb, as lower_for_cli reads it). On errors in the grammar prints
+// the diagnostics to stderr and returns nullopt (the caller exits with 1); warnings are printed and
+// growing goes on. Derivation failures throw UserError.
 std::optional<Skeleton> grow_for_cli(const GrowArgs& args);
-// The same for grammar text already in memory (a decompiled .rmb), named args.file.
-std::optional<Skeleton> grow_text_for_cli(const GrowArgs& args, const std::string& text);
 
 // Prints the sink's diagnostics (sorted, as text with source lines and carets) to stderr.
 void print_diagnostics(const SourceManager& sources, DiagnosticSink& diags);

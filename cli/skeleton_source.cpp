@@ -71,7 +71,7 @@ ScanSource load_scan_source(const std::string& path, const SkeletonSourceOptions
 
 SourceKind source_kind(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
-  if (ext == ".ramus") return SourceKind::Grammar;
+  if (ext == ".ramus" || ext == ".rmb" || is_binary_grammar(path)) return SourceKind::Grammar;
   if (ext == ".json") return SourceKind::SkeletonFile;
   return SourceKind::Scan;
 }

@@ -21,7 +21,8 @@ struct SkeletonSourceOptions {
   bool quiet = false;
 };
 
-// What a path names, by its extension: .ramus a grammar, .json a skeleton, anything else a scan.
+// What a path names: .ramus or a binary grammar (.rmb, sniffed) a grammar, .json a skeleton,
+// anything else a scan.
 enum class SourceKind { Grammar, SkeletonFile, Scan };
 SourceKind source_kind(const std::string& path);
 

@@ -8,6 +8,7 @@
 #include <new>
 #include <thread>
 
+#include "compiler/bracket_balance.h"
 #include "compiler/context.h"
 #include "compiler/expr_vm.h"
 #include "compiler/parallel_chunks.h"
@@ -326,6 +327,12 @@ bool apply_cut(ModuleString& s) {
   return true;
 }
 
+void check_branches(const ir::Grammar& g, const ModuleString& s, ir::Kind kind,
+                    const std::string& where) {
+  std::string error = unclosed_branch_error(g, s, kind, where);
+  if (!error.empty()) throw DeriveError(error);
+}
+
 ModuleString axiom_string(const ir::Grammar& g) {
   ModuleString s;
   for (const ir::SuccModule& m : g.axiom) {
@@ -384,7 +391,11 @@ ModuleString derive(const ir::Grammar& g, const DeriveOptions& options, DeriveSt
   ModuleString s = axiom_string(g), next;
   if (s.size() > options.max_modules) throw DeriveError("the axiom is longer than --max-modules");
   const bool cut = may_cut(g);
+  check_branches(g, s, ir::Kind::Rewrite, "the axiom");
+  const bool rewrite_unbalances = may_unbalance_branches(g, ir::Kind::Rewrite);
+  const bool decompose_unbalances = may_unbalance_branches(g, ir::Kind::Decompose);
   decompose_and_cut(g, s, next, info, 0, cut);
+  if (decompose_unbalances) check_branches(g, s, ir::Kind::Decompose, "decomposition of the axiom");
   if (stats) stats->lengths.assign(1, s.size());
   for (int step = 1; step <= steps; ++step) {
     info.key = std::uint64_t(step) * 512;
@@ -392,8 +403,12 @@ ModuleString derive(const ir::Grammar& g, const DeriveOptions& options, DeriveSt
     if (apply_pass(g, ir::Kind::Rewrite, s, next, info)) {
       std::swap(s, next);
       next.clear();
+      if (rewrite_unbalances) check_branches(g, s, ir::Kind::Rewrite, info.where);
     }
     decompose_and_cut(g, s, next, info, step, cut);
+    if (decompose_unbalances) {
+      check_branches(g, s, ir::Kind::Decompose, "decomposition after step " + std::to_string(step));
+    }
     if (stats) stats->lengths.push_back(s.size());
   }
   peak = std::max(peak, s.bytes());

@@ -67,6 +67,10 @@ bool apply_pass(const ir::Grammar& g, ir::Kind kind, const ModuleString& in, Mod
 // the `]` that closes it. Returns false if the string holds no cut.
 bool apply_cut(ModuleString& s);
 
+// Throws DeriveError when a `]` of `s` closes no branch (compiler/bracket_balance.h).
+void check_branches(const ir::Grammar& g, const ModuleString& s, ir::Kind kind,
+                    const std::string& where);
+
 // 80% of physical memory, the default of the memory guard.
 std::uint64_t default_memory_limit();
 

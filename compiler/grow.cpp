@@ -5,9 +5,7 @@
 
 namespace ramus {
 
-namespace {
-
-Skeleton grow_lowered(const ir::Grammar& g, const GrowOptions& options) {
+Skeleton grow_grammar(const ir::Grammar& g, const GrowOptions& options) {
   DeriveOptions d;
   d.steps = options.steps;
   d.max_modules = options.max_modules;
@@ -23,21 +21,19 @@ Skeleton grow_lowered(const ir::Grammar& g, const GrowOptions& options) {
   }
 }
 
-}  // namespace
-
 Skeleton grow_file(const std::string& path, const GrowOptions& options, SourceManager& sources,
                    DiagnosticSink& diagnostics) {
-  return grow_lowered(lower_file(path, options, sources, diagnostics), options);
+  return grow_grammar(lower_file(path, options, sources, diagnostics), options);
 }
 
 Skeleton grow_checked(const Program& program, const GrowOptions& options, SourceManager& sources,
                       DiagnosticSink& diagnostics) {
-  return grow_lowered(lower_checked(program, options, sources, diagnostics), options);
+  return grow_grammar(lower_checked(program, options, sources, diagnostics), options);
 }
 
 Skeleton grow_text(const std::string& name, const std::string& text, const GrowOptions& options,
                    SourceManager& sources, DiagnosticSink& diagnostics) {
-  return grow_lowered(lower_text(name, text, options, sources, diagnostics), options);
+  return grow_grammar(lower_text(name, text, options, sources, diagnostics), options);
 }
 
 }  // namespace ramus

@@ -22,6 +22,11 @@ Skeleton grow_file(const std::string& path, const GrowOptions& options, SourceMa
 Skeleton grow_checked(const Program& program, const GrowOptions& options, SourceManager& sources,
                       DiagnosticSink& diagnostics);
 
+// The back half alone, for a grammar already lowered (or decoded from an .rmb): derive ->
+// interpret, with options.steps and options.max_modules (the seed is the grammar's own, which
+// a caller overriding it sets first, as the runtime does). Throws GrowError when derivation fails.
+Skeleton grow_grammar(const ir::Grammar& grammar, const GrowOptions& options);
+
 // The same for grammar text in memory (a decompiled .rmb), named `name` in diagnostics.
 Skeleton grow_text(const std::string& name, const std::string& text, const GrowOptions& options,
                    SourceManager& sources, DiagnosticSink& diagnostics);

@@ -118,11 +118,19 @@ void dump_production(const Grammar& g, std::uint32_t pi, std::string& out) {
 
 }  // namespace
 
+TurtleOp polygon_op(const std::string& name) {
+  if (name == "{") return TurtleOp::PolygonBegin;
+  if (name == ".") return TurtleOp::Vertex;
+  if (name == "}") return TurtleOp::PolygonEnd;
+  if (name == "G") return TurtleOp::MoveNoVertex;
+  return TurtleOp::None;
+}
+
 SymbolId Grammar::intern(const std::string& n) {
   int found = find_symbol(n);
   if (found >= 0) return SymbolId(found);
   if (symbols.size() >= 0xffff) throw std::length_error("more than 65535 module symbols");
-  symbols.push_back(Symbol{n, -1, TurtleOp::None});
+  symbols.push_back(Symbol{n, -1, polygon_op(n)});
   ignored.push_back(0);
   return SymbolId(symbols.size() - 1);
 }

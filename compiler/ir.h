@@ -40,7 +40,14 @@ enum class TurtleOp : std::uint8_t {
   Colour,      // '
   Organ,       // ~
   Cut,         // %
-  None,        // any other module
+  // The polygon symbols of ABOP 5.2 (developmental surfaces). They have no fixed symbol id: a
+  // grammar interns them by name like any module (polygon_op below), so the symbol ids and the
+  // .rmb layout of grammars without polygons are what they were.
+  PolygonBegin,  // {
+  Vertex,        // .
+  PolygonEnd,    // }
+  MoveNoVertex,  // G
+  None,          // any other module
 };
 inline constexpr int kTurtleSymbolCount = 16;
 inline constexpr const char* kTurtleNames[kTurtleSymbolCount] = {
@@ -48,6 +55,10 @@ inline constexpr const char* kTurtleNames[kTurtleSymbolCount] = {
 inline constexpr SymbolId kPush = SymbolId(TurtleOp::Push);
 inline constexpr SymbolId kPop = SymbolId(TurtleOp::Pop);
 inline constexpr SymbolId kCut = SymbolId(TurtleOp::Cut);
+
+// The turtle meaning of a symbol without a fixed id: `{`, `.`, `}` and `G` are the polygon
+// symbols, anything else is TurtleOp::None.
+TurtleOp polygon_op(const std::string& name);
 
 struct Symbol {
   std::string name;

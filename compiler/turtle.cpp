@@ -3,6 +3,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "compiler/bracket_balance.h"
 #include "compiler/turtle_frame.h"
 
 namespace ramus {
@@ -29,9 +30,12 @@ class Walker {
 
   Skeleton run() {
     for (std::size_t i = 0; i < s_.size(); ++i) {
-      const ir::SymbolId sym = s_.symbol(i);
-      if (sym >= ir::kTurtleSymbolCount) continue;
-      i = step(ir::TurtleOp(sym), i);
+      const ir::TurtleOp op = g_.symbols[s_.symbol(i)].turtle;
+      if (op == ir::TurtleOp::None) continue;
+      i = step(op, i);
+    }
+    if (!polygons_.empty()) {
+      fail(polygons_.back().opened, "`{` opens a polygon that no `}` closes");
     }
     return std::move(sk_);
   }
@@ -58,6 +62,42 @@ class Walker {
     t_.pos += t_.h * arg(i, g_.settings.step);
     t_.node = add_node(i, t_.node);
     t_.bend(tropism_, g_.settings.elasticity);
+  }
+  // An error of the string itself (a `]` or `}` with nothing to close), named by the module of
+  // the derived string it came from and the productions that could have written it.
+  [[noreturn]] void fail(std::size_t i, const std::string& what) const {
+    std::string msg = "interpretation: " + what + " (module " + std::to_string(i);
+    if (origins_) msg += ", from module " + std::to_string(source(i)) + " of the derived string";
+    msg += ")" + unbalanced_productions(g_, s_.symbol(i));
+    throw DeriveError(msg);
+  }
+  // ABOP 5.2 (developmental surface models): `{` starts a polygon on a stack of open polygons,
+  // which `[` and `]` do not save or restore, so that a polygon may collect vertices from several
+  // branches (the cordate leaf's `[+A{.].C.}`) and polygons may nest (lily of the valley).
+  void record_vertex() {
+    if (!polygons_.empty()) polygons_.back().vertices.push_back(t_.pos);
+  }
+  void close_polygon(std::size_t i) {
+    if (polygons_.empty()) fail(i, "`}` closes no polygon");
+    OpenPolygon p = std::move(polygons_.back());
+    polygons_.pop_back();
+    // Consecutive repeats (a `.` after an `f` that recorded the same point) and a last vertex
+    // equal to the first add no area.
+    std::vector<Vec3> v;
+    for (const Vec3& x : p.vertices) {
+      if (v.empty() || length(x - v.back()) > 1e-12) v.push_back(x);
+    }
+    while (v.size() > 1 && length(v.back() - v.front()) <= 1e-12) v.pop_back();
+    if (v.size() < 3) return;  // a point or a line has no surface
+    OrganAnchor a;
+    a.node = p.node;
+    a.position = v.front();
+    a.heading = t_.h;
+    a.left = t_.l;
+    a.up = t_.u;
+    a.size = 1;
+    a.vertices = std::move(v);
+    sk_.organs.push_back(std::move(a));
   }
   void organ(std::size_t i) {
     OrganAnchor a;
@@ -90,10 +130,25 @@ class Walker {
     switch (op) {
       case ir::TurtleOp::Forward:
         forward(i);
+        record_vertex();  // inside a polygon F and f trace its boundary (ABOP fig. 5.3)
         break;
       case ir::TurtleOp::Move:
         t_.pos += t_.h * arg(i, g_.settings.step);
         t_.node = kNoParent;  // the next F starts a disconnected segment
+        record_vertex();
+        break;
+      case ir::TurtleOp::MoveNoVertex:  // G: a segment like F that records no vertex
+        forward(i);
+        break;
+      case ir::TurtleOp::PolygonBegin:
+        polygons_.push_back(OpenPolygon{{}, i, t_.node});
+        break;
+      case ir::TurtleOp::Vertex:
+        if (polygons_.empty()) fail(i, "`.` records a vertex outside any polygon");
+        record_vertex();
+        break;
+      case ir::TurtleOp::PolygonEnd:
+        close_polygon(i);
         break;
       case ir::TurtleOp::Left:
         rotate_pair(t_.h, t_.l, arg(i, angle));
@@ -124,10 +179,9 @@ class Walker {
         ++t_.order;
         break;
       case ir::TurtleOp::Pop:
-        if (!stack_.empty()) {
-          t_ = stack_.back();
-          stack_.pop_back();
-        }
+        if (stack_.empty()) fail(i, "`]` closes no branch");
+        t_ = stack_.back();
+        stack_.pop_back();
         break;
       case ir::TurtleOp::Width:
         t_.width = s_.nparams(i) > 0 ? s_.param(i, 0) : t_.width * g_.settings.width_decay;
@@ -153,6 +207,12 @@ class Walker {
   Vec3 tropism_;
   State t_;
   std::vector<State> stack_;
+  struct OpenPolygon {
+    std::vector<Vec3> vertices;
+    std::size_t opened = 0;          // the `{`
+    std::uint32_t node = kNoParent;  // the node the turtle was at
+  };
+  std::vector<OpenPolygon> polygons_;
   Skeleton sk_;
 };
 
@@ -180,6 +240,9 @@ Skeleton interpret(const ir::Grammar& g, const ModuleString& s, const TurtleOpti
     if (!apply_pass(g, ir::Kind::Interpret, *in, next, info, &origins)) break;
     std::swap(cur, next);
     in = &cur;
+    if (may_unbalance_branches(g, ir::Kind::Interpret)) {
+      check_branches(g, *in, ir::Kind::Interpret, info.where);
+    }
   }
   return run_turtle(g, *in, &origins);
 }

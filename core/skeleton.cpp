@@ -65,6 +65,11 @@ std::string Skeleton::validate() const {
     if (organs[i].node != kNoParent && organs[i].node >= n) {
       return "organ " + std::to_string(i) + " hangs from node out of range";
     }
+    for (const Vec3& v : organs[i].vertices) {
+      if (!std::isfinite(v.x) || !std::isfinite(v.y) || !std::isfinite(v.z)) {
+        return "organ " + std::to_string(i) + " has a non-finite polygon vertex";
+      }
+    }
   }
   return {};
 }

@@ -39,6 +39,10 @@ struct OrganAnchor {
   Vec3 up{0, -1, 0};
   double size = 1.0;
   std::uint32_t kind = 0;  // organ kind: 0 leaf; the grammar may name others
+  // A polygon organ (ABOP 5.2, the turtle's `{ . }`): its outline in skeleton coordinates, three
+  // or more vertices in the order recorded, not closed (the last joins the first). Empty for an
+  // organ placed with `~`, which back ends draw as a card of length `size` along `heading`.
+  std::vector<Vec3> vertices;
 };
 
 struct Skeleton {

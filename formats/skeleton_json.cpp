@@ -64,7 +64,20 @@ void put_organ(std::string& out, const OrganAnchor& o) {
   put_vec(out, "up", o.up);
   out += ", \"size\": ";
   put_number(out, o.size);
-  out += ", \"kind\": " + std::to_string(o.kind) + '}';
+  out += ", \"kind\": " + std::to_string(o.kind);
+  if (!o.vertices.empty()) {  // a polygon organ (docs/skeleton-format.md)
+    out += ", \"vertices\": [";
+    for (std::size_t i = 0; i < o.vertices.size(); ++i) {
+      out += i ? ", [" : "[";
+      for (int k = 0; k < 3; ++k) {
+        if (k) out += ", ";
+        put_number(out, o.vertices[i][k]);
+      }
+      out += ']';
+    }
+    out += ']';
+  }
+  out += '}';
 }
 
 // Reads values out of the JSON tree, naming their location ("nodes[3].radius") in errors.
@@ -162,7 +175,7 @@ class Reader {
   OrganAnchor organ(const JsonValue& v, const std::string& path, std::size_t nodes,
                     std::size_t kinds) {
     expect_kind(v, JsonValue::Kind::kObject, path);
-    known_keys(v, path, {"node", "position", "heading", "left", "up", "size", "kind"});
+    known_keys(v, path, {"node", "position", "heading", "left", "up", "size", "kind", "vertices"});
     OrganAnchor o;
     const JsonValue* node = v.find("node");
     if (!node) error(v, path, "missing \"node\"");
@@ -182,6 +195,14 @@ class Reader {
     if (auto* s = v.find("size")) o.size = number(*s, path + ".size");
     if (auto* k = v.find("kind")) {
       o.kind = std::uint32_t(integer(*k, path + ".kind", 0, std::int64_t(kinds) - 1));
+    }
+    if (auto* vs = v.find("vertices")) {
+      expect_kind(*vs, JsonValue::Kind::kArray, path + ".vertices");
+      if (vs->items.size() < 3)
+        error(*vs, path + ".vertices", "a polygon needs 3 or more vertices");
+      for (std::size_t i = 0; i < vs->items.size(); ++i) {
+        o.vertices.push_back(vec3(vs->items[i], path + ".vertices[" + std::to_string(i) + "]"));
+      }
     }
     return o;
   }

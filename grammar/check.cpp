@@ -71,6 +71,7 @@ void check_program(const Program& program, const SourceManager& sources, Diagnos
       if (const auto* ls = std::get_if<ast::LSystem>(&decl)) {
         detail::check_lsystem(cx, f, *ls);
         detail::check_lsystem_flow(cx, f, *ls);
+        detail::check_brackets(cx, *ls);
       } else if (const auto* ps = std::get_if<ast::Pieces>(&decl)) {
         detail::check_pieces(cx, f, *ps);
       } else if (const auto* vx = std::get_if<ast::Voxels>(&decl)) {

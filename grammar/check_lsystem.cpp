@@ -31,7 +31,10 @@ std::string number_text(double v) {
 std::optional<std::size_t> turtle_max_args(std::string_view name) {
   if (name == "F" || name == "f") return 1;
   if (!is_turtle_symbol(name)) return std::nullopt;
-  if (name == "|" || name == "$" || name == "[" || name == "]" || name == "%") return 0;
+  if (name == "|" || name == "$" || name == "[" || name == "]" || name == "%" || name == "{" ||
+      name == "." || name == "}") {
+    return 0;
+  }
   return 1;
 }
 

@@ -9,7 +9,7 @@ namespace ramus::detail {
 
 bool is_turtle_symbol(std::string_view name) {
   return name.size() == 1 &&
-         std::string_view("+-&^\\/|$[]!'~%").find(name[0]) != std::string_view::npos;
+         std::string_view("+-&^\\/|$[]!'~%{.}").find(name[0]) != std::string_view::npos;
 }
 
 std::vector<std::string> module_parts(const CheckContext& cx, std::uint32_t file,

@@ -160,9 +160,9 @@ class PiecesChecker {
 
   void setting(const ast::PieceSetting& s) {
     const std::string& key = s.key.name;
-    if (key != "root" && key != "twist" && key != "depth") {
+    if (key != "root" && key != "twist" && key != "depth" && key != "skeleton") {
       cx_.error(DiagCode::UnknownPieceSetting, s.key.span, "unknown setting '" + key + "'");
-      cx_.note("the settings of a pieces block are root, twist and depth");
+      cx_.note("the settings of a pieces block are root, twist, depth and skeleton");
       return;
     }
     auto [it, fresh] = settings_.emplace(key, s.key.span);
@@ -177,7 +177,9 @@ class PiecesChecker {
     }
     const ast::Expr& v = s.values[0];
     const auto* name = std::get_if<ast::NameRef>(&v.node);
-    if (key == "root") {
+    if (key == "skeleton") {
+      skeleton_setting(v, name);
+    } else if (key == "root") {
       if (!name) {
         cx_.error(DiagCode::InvalidPieceSetting, v.span, "'root' takes the name of a piece");
       } else {
@@ -190,6 +192,35 @@ class PiecesChecker {
       std::optional<double> x = cx_.fold(v, file_);
       if (key == "depth" && x && (*x < 0 || *x != std::floor(*x))) {
         cx_.error(DiagCode::InvalidPieceSetting, v.span, "'depth' must be a non-negative integer");
+      }
+    }
+  }
+
+  // `skeleton NAME;`: the block is fitted to the tree grown by the lsystem NAME, of this file or
+  // one it imports, so it must name one and have no attach rules of its own.
+  void skeleton_setting(const ast::Expr& v, const ast::NameRef* name) {
+    if (!name) {
+      cx_.error(DiagCode::InvalidPieceSetting, v.span, "'skeleton' takes the name of an lsystem");
+      return;
+    }
+    bool found = false;
+    for (const ast::File& f : cx_.program.files) {
+      for (const ast::Decl& d : f.decls) {
+        const auto* ls = std::get_if<ast::LSystem>(&d);
+        found = found || (ls && ls->name.name == name->name);
+      }
+    }
+    if (!found) {
+      cx_.error(DiagCode::UnknownLSystem, v.span, "no lsystem named '" + name->name + "'");
+      cx_.note("'skeleton' names an lsystem block of this file or of a file it imports");
+    }
+    for (const ast::PiecesItem& item : ps_.items) {
+      if (const auto* rule = std::get_if<ast::AttachRule>(&item)) {
+        cx_.error(
+            DiagCode::InvalidPieceSetting, v.span,
+            "'skeleton' fits the pieces to a grown tree, but the block also has attach rules");
+        cx_.note(rule->span, "the first attach rule");
+        return;
       }
     }
   }

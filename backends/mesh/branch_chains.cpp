@@ -36,6 +36,9 @@ void check_values(const Skeleton& s) {
         !finite_frame(o.heading, o.left, o.up)) {
       throw MeshError(where("organ", i) + " has a non-finite position, size or frame");
     }
+    for (const Vec3& v : o.vertices) {
+      if (!is_finite(v)) throw MeshError(where("organ", i) + " has a non-finite polygon vertex");
+    }
     if (o.node != kNoParent && o.node >= n)
       throw MeshError(where("organ", i) + " hangs from a node out of range");
   }

@@ -40,4 +40,9 @@ bool add_organ_cards(const Skeleton& s, const PreparedSkeleton& p, std::size_t i
                      const WindField& wind, const MeshOptions& options, double extra_scale,
                      MeshPart& out);
 
+// Appends polygon organ `i` (its `vertices`), triangulated in its best-fit plane with a front
+// and a back face. Returns false when the outline has no area.
+bool add_organ_polygon(const Skeleton& s, const PreparedSkeleton& p, std::size_t i,
+                       const WindField& wind, MeshPart& out);
+
 }  // namespace ramus::mesh

@@ -229,7 +229,9 @@ struct Reader {
   bool is_leaf(int material) const {
     if (material < 0 || material >= int(model.materials.size())) return false;
     const tinygltf::Material& m = model.materials[material];
-    return m.name == "leaf" || (!m.alphaMode.empty() && m.alphaMode != "OPAQUE");
+    // "surface": the turtle's polygons (leaves and petals of ABOP 5.2), drawn as leaves.
+    return m.name == "leaf" || m.name == "surface" ||
+           (!m.alphaMode.empty() && m.alphaMode != "OPAQUE");
   }
 
   // The node's triangles: placed by `world`, or skinned by linear blend skinning when the node

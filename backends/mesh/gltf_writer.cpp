@@ -124,6 +124,18 @@ class ModelBuilder : public GltfBufferBuilder {
                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, n, TINYGLTF_TYPE_VEC4, {}, {}, true);
   }
 
+  // The polygon organs: opaque, untextured leaf green (their UVs are planar, for a user's own
+  // texture); each polygon has its own back face, so the material stays single-sided.
+  int add_surface_material() {
+    tinygltf::Material m;
+    m.name = "surface";
+    m.pbrMetallicRoughness.baseColorFactor = {0.275, 0.529, 0.176, 1.0};
+    m.pbrMetallicRoughness.metallicFactor = 0.0;
+    m.pbrMetallicRoughness.roughnessFactor = 0.6;
+    model_.materials.push_back(m);
+    return int(model_.materials.size() - 1);
+  }
+
   tinygltf::Primitive add_part(const MeshPart& part, int material, const WindRig& rig) {
     tinygltf::Primitive prim;
     prim.mode = TINYGLTF_MODE_TRIANGLES;
@@ -210,14 +222,18 @@ std::vector<int> add_wind(ModelBuilder& b, const WindRig& rig, const Vec3& origi
 }
 
 void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
-  bool any_bark = false, any_leaves = false;
+  bool any_bark = false, any_leaves = false, any_surfaces = false;
   for (const TreeMesh& m : lods) {
     any_bark = any_bark || !m.bark.empty();
     any_leaves = any_leaves || !m.leaves.empty();
+    any_surfaces = any_surfaces || !m.surfaces.empty();
   }
-  if (!any_bark && !any_leaves) throw MeshError("nothing to write: the tree has no geometry");
+  if (!any_bark && !any_leaves && !any_surfaces) {
+    throw MeshError("nothing to write: the tree has no geometry");
+  }
   const int bark = any_bark ? b.add_material("bark", false) : -1;
   const int leaf = any_leaves ? b.add_material("leaf", true) : -1;
+  const int surface = any_surfaces ? b.add_surface_material() : -1;
   auto& model = b.model();
   const std::string tree = lods.front().name.substr(0, lods.front().name.rfind("_LOD"));
   const WindRig& rig = lods.front().wind_rig;
@@ -226,6 +242,7 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
     mesh.name = m.name;
     if (!m.bark.empty()) mesh.primitives.push_back(b.add_part(m.bark, bark, rig));
     if (!m.leaves.empty()) mesh.primitives.push_back(b.add_part(m.leaves, leaf, rig));
+    if (!m.surfaces.empty()) mesh.primitives.push_back(b.add_part(m.surfaces, surface, rig));
     if (mesh.primitives.empty()) throw MeshError("level of detail " + m.name + " has no geometry");
     model.meshes.push_back(std::move(mesh));
   }

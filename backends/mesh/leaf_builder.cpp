@@ -1,12 +1,13 @@
-// Leaf cards at organ anchors. A card of length `size` runs along the anchor's heading H from the
-// anchor point, its width along L, so the leaf faces U (the turtle's up). Every card gets a front
-// and a back face with opposite normals: engines can then keep the leaf material single-sided
-// and still light both sides correctly.
+// Organ geometry: leaf cards at organ anchors, and the turtle's polygons. Cards: A card of length
+// `size` runs along the anchor's heading H from the anchor point, its width along L, so the leaf
+// faces U (the turtle's up). Every card gets a front and a back face with opposite normals: engines
+// can then keep the leaf material single-sided and still light both sides correctly.
 #include <algorithm>
 #include <cmath>
 
 #include "backends/mesh/builders.h"
 #include "backends/mesh/frames.h"
+#include "backends/mesh/polygon_triangulation.h"
 
 namespace ramus::mesh {
 namespace {
@@ -46,6 +47,52 @@ void add_card(MeshPart& out, const Vec3& origin, const Vec3& h, const Vec3& acro
 
 }  // namespace
 
+namespace {
+
+// The wind weights of organ o's vertices: its node's branch bend and its chain's phase.
+void organ_wind(const PreparedSkeleton& p, const OrganAnchor& o, const WindField& wind,
+                float& branch, float& phase) {
+  branch = phase = 0;
+  if (o.node == kNoParent) return;
+  branch = wind.node_branch[o.node];
+  const std::uint32_t c = p.chain_of_node[o.node];
+  if (c != kNoChain) phase = wind.chain_phase[c];
+}
+
+}  // namespace
+
+bool add_organ_polygon(const Skeleton& s, const PreparedSkeleton& p, std::size_t i,
+                       const WindField& wind, MeshPart& out) {
+  const OrganAnchor& o = s.organs[i];
+  const PolygonTriangles t = triangulate_polygon(o.vertices);
+  if (t.indices.empty()) return false;
+  float branch = 0, phase = 0;
+  organ_wind(p, o, wind, branch, phase);
+  for (int face = 0; face < 2; ++face) {
+    const std::uint32_t b = std::uint32_t(out.positions.size());
+    const Vec3 n = face == 0 ? t.normal : -t.normal;
+    for (std::size_t k = 0; k < o.vertices.size(); ++k) {
+      const Vec3& v = o.vertices[k];
+      out.positions.push_back(Vec3f(v));
+      out.normals.push_back(Vec3f(n));
+      out.uvs.push_back(t.uvs[k]);
+      out.wind.push_back({wind.main_bend(v.z), branch, phase, 0.0f});
+      // The polygon sways with the node it grew on, as a leaf card does (wind_rig.h).
+      out.skin_node.push_back(o.node);
+    }
+    for (std::size_t k = 0; k + 2 < t.indices.size(); k += 3) {
+      if (face == 0) {
+        out.indices.insert(out.indices.end(),
+                           {b + t.indices[k], b + t.indices[k + 1], b + t.indices[k + 2]});
+      } else {  // the back face winds the other way
+        out.indices.insert(out.indices.end(),
+                           {b + t.indices[k], b + t.indices[k + 2], b + t.indices[k + 1]});
+      }
+    }
+  }
+  return true;
+}
+
 bool add_organ_cards(const Skeleton& s, const PreparedSkeleton& p, std::size_t i,
                      const WindField& wind, const MeshOptions& options, double extra_scale,
                      MeshPart& out) {
@@ -55,11 +102,7 @@ bool add_organ_cards(const Skeleton& s, const PreparedSkeleton& p, std::size_t i
   Vec3 h, l, u;
   card_axes(o, h, l, u);
   float branch = 0, phase = 0;
-  if (o.node != kNoParent) {
-    branch = wind.node_branch[o.node];
-    const std::uint32_t c = p.chain_of_node[o.node];
-    if (c != kNoChain) phase = wind.chain_phase[c];
-  }
+  organ_wind(p, o, wind, branch, phase);
   const double width = len * options.leaf_aspect;
   // A leaf on no node (kNoParent, a free organ) stays where it is (wind_rig.h).
   const std::uint32_t node = o.node;

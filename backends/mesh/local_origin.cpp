@@ -16,7 +16,10 @@ Vec3 local_origin(const Skeleton& s) {
   // Non-finite positions are left for build_tree_mesh to report with the node's index.
   double far = 0;
   for (const SkeletonNode& n : s.nodes) far = std::max(far, largest_coordinate(n.position));
-  for (const OrganAnchor& a : s.organs) far = std::max(far, largest_coordinate(a.position));
+  for (const OrganAnchor& a : s.organs) {
+    far = std::max(far, largest_coordinate(a.position));
+    for (const Vec3& v : a.vertices) far = std::max(far, largest_coordinate(v));
+  }
   if (!(far > kFloatMillimetreRange) || !std::isfinite(far)) return {};
   Vec3 lo, hi;
   s.bounds(lo, hi);
@@ -26,7 +29,10 @@ Vec3 local_origin(const Skeleton& s) {
 Skeleton relative_to(const Skeleton& s, const Vec3& origin) {
   Skeleton out = s;
   for (SkeletonNode& n : out.nodes) n.position -= origin;
-  for (OrganAnchor& a : out.organs) a.position -= origin;
+  for (OrganAnchor& a : out.organs) {
+    a.position -= origin;
+    for (Vec3& v : a.vertices) v -= origin;
+  }
   return out;
 }
 

@@ -47,6 +47,7 @@ OMesh to_openmesh(const TreeMesh& mesh, UpAxis up) {
   om.request_vertex_colors();
   add_part(om, mesh.bark, kBarkColour, up);
   add_part(om, mesh.leaves, kLeafColour, up);
+  add_part(om, mesh.surfaces, kLeafColour, up);
   return om;
 }
 
@@ -84,10 +85,10 @@ std::string add_ply_comments(const std::string& ply, const std::string& comments
 }
 
 // Adds the placement comments, `mtllib` and the material switches: the bark faces come first,
-// then the leaf faces.
+// then the leaf faces, then the polygon organs' faces.
 std::string add_materials(const std::string& obj, const std::string& header,
                           const std::string& mtl_name, std::size_t bark_faces,
-                          std::size_t leaf_faces) {
+                          std::size_t leaf_faces, std::size_t surface_faces) {
   std::istringstream in(obj);
   std::string out = "# ramus tree mesh\n" + header + "mtllib " + mtl_name + "\n";
   out.reserve(obj.size() + 64);
@@ -97,6 +98,7 @@ std::string add_materials(const std::string& obj, const std::string& header,
     if (line.rfind("f ", 0) == 0) {
       if (faces == 0 && bark_faces > 0) out += "usemtl bark\n";
       if (faces == bark_faces && leaf_faces > 0) out += "usemtl leaf\n";
+      if (faces == bark_faces + leaf_faces && surface_faces > 0) out += "usemtl surface\n";
       ++faces;
     }
     out += line;
@@ -110,11 +112,12 @@ std::string add_materials(const std::string& obj, const std::string& header,
 std::string obj_material_library() {
   return "# ramus tree materials\n"
          "newmtl bark\nKa 0 0 0\nKd 0.361 0.259 0.173\nKs 0.02 0.02 0.02\nNs 8\nd 1\nillum 2\n\n"
-         "newmtl leaf\nKa 0 0 0\nKd 0.275 0.529 0.176\nKs 0.05 0.05 0.05\nNs 16\nd 1\nillum 2\n";
+         "newmtl leaf\nKa 0 0 0\nKd 0.275 0.529 0.176\nKs 0.05 0.05 0.05\nNs 16\nd 1\nillum 2\n\n"
+         "newmtl surface\nKa 0 0 0\nKd 0.275 0.529 0.176\nKs 0.05 0.05 0.05\nNs 16\nd 1\nillum 2\n";
 }
 
 void write_openmesh(const TreeMesh& mesh, const std::string& path, UpAxis up) {
-  if (mesh.bark.empty() && mesh.leaves.empty())
+  if (mesh.bark.empty() && mesh.leaves.empty() && mesh.surfaces.empty())
     throw MeshError("nothing to write: the tree has no geometry");
   const std::filesystem::path p(path);
   const std::string ext = p.extension().string();
@@ -136,7 +139,8 @@ void write_openmesh(const TreeMesh& mesh, const std::string& path, UpAxis up) {
   write_file_atomically(mtl.string(), obj_material_library());
   write_file_atomically(
       path, add_materials(obj, placement_comments("# ", mesh, up), mtl.filename().string(),
-                          mesh.bark.triangle_count(), mesh.leaves.triangle_count()));
+                          mesh.bark.triangle_count(), mesh.leaves.triangle_count(),
+                          mesh.surfaces.triangle_count()));
 }
 
 }  // namespace ramus::mesh

@@ -67,6 +67,10 @@ TreeMesh build_level(const Skeleton& s, const PreparedSkeleton& p, const WindFie
   const std::size_t stride = std::size_t(1) << lod;
   const double scale = std::sqrt(double(stride));
   for (std::size_t i = 0; i < s.organs.size(); ++i) {
+    if (!s.organs[i].vertices.empty()) {  // a polygon is the organ's shape: kept at every level
+      add_organ_polygon(s, p, i, wind, mesh.surfaces);
+      continue;
+    }
     if (i % stride != 0) continue;
     if (!add_organ_cards(s, p, i, wind, options, scale, mesh.leaves) && lod == 0) {
       ++report.skipped_organs;

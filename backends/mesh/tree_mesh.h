@@ -47,6 +47,9 @@ struct TreeMesh {
   // Material "leaf": alpha-masked cards. Every card face is 4 consecutive vertices with UVs
   // (0,0) (1,0) (0,1) (1,1) and 2 triangles; each card has a front and a back face.
   MeshPart leaves;
+  // Material "surface": the polygon organs (the turtle's `{ . }`, ABOP 5.2), opaque; every
+  // polygon is triangulated twice, a front and a back face with opposite normals.
+  MeshPart surfaces;
   // World position (double, z up) of the vertices' (0, 0, 0): zero for trees near the origin,
   // a local origin for georeferenced ones (backends/mesh/local_origin.h). World position of a
   // vertex = origin + vertex; writers record it.
@@ -54,7 +57,9 @@ struct TreeMesh {
   // The joints and animation of the wind skin (MeshOptions::wind); empty otherwise. Every level
   // of a tree carries the same rig.
   WindRig wind_rig;
-  std::size_t triangle_count() const { return bark.triangle_count() + leaves.triangle_count(); }
+  std::size_t triangle_count() const {
+    return bark.triangle_count() + leaves.triangle_count() + surfaces.triangle_count();
+  }
 };
 
 enum class LeafStyle {

@@ -291,4 +291,15 @@ bool pieces_block_fits_skeleton(const Program& program, std::string_view block) 
   return true;
 }
 
+std::string pieces_skeleton_system(const Program& program, std::string_view block) {
+  const ast::Pieces* p = find_block(program, block);
+  if (!p) return {};
+  for (const ast::PiecesItem& item : p->items) {
+    const auto* s = std::get_if<ast::PieceSetting>(&item);
+    if (!s || s->key.name != "skeleton" || s->values.size() != 1) continue;
+    if (const auto* name = std::get_if<ast::NameRef>(&s->values[0].node)) return name->name;
+  }
+  return {};
+}
+
 }  // namespace ramus::pieces

@@ -143,6 +143,10 @@ PieceSet lower_pieces(const Program& program, const SourceManager& sources,
 // the skeleton grown from the file's lsystem block instead of being assembled from rules.
 bool pieces_block_fits_skeleton(const Program& program, std::string_view block);
 
+// The lsystem the chosen pieces block names with `skeleton NAME;` (in the root file or an
+// imported one), or an empty string: then the root file's first lsystem block.
+std::string pieces_skeleton_system(const Program& program, std::string_view block);
+
 // ---- assembled trees ------------------------------------------------------------------------
 
 struct PlacedPiece {

@@ -28,12 +28,15 @@ void draw_view_divider(std::vector<std::uint8_t>& rgb, const PreviewOptions& o) 
 
 namespace {
 
+// `surface`: the polygon organs, drawn whole in the leaf colour (their UVs are planar, not the
+// card's leaf mask).
 void draw_part(Raster& raster, const View& view, const mesh::MeshPart& part, bool leaf,
-               const PreviewOptions& o) {
+               const PreviewOptions& o, bool surface = false) {
   const int f = o.supersample;
   // Leaf cards of a grown tree carry the card UVs the leaf mask is drawn in; leaves read from a
   // file without them are drawn whole.
   const bool masked = leaf && part.uvs.size() == part.positions.size();
+  leaf = leaf || surface;
   for (std::size_t t = 0; t + 2 < part.indices.size(); t += 3) {
     const std::uint32_t i0 = part.indices[t], i1 = part.indices[t + 1], i2 = part.indices[t + 2];
     const auto& p = part.positions;
@@ -72,6 +75,7 @@ std::vector<std::uint8_t> render_rgb(const mesh::TreeMesh& tree, const PreviewOp
   for (const View& view : make_views(tree, o.width, o.height)) {
     draw_part(raster, view, tree.bark, false, o);
     draw_part(raster, view, tree.leaves, true, o);
+    draw_part(raster, view, tree.surfaces, false, o, true);
   }
   auto rgb = raster.resolve(f);
   draw_view_divider(rgb, o);

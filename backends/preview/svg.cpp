@@ -79,6 +79,7 @@ std::string render_svg(const mesh::TreeMesh& tree, const PreviewOptions& o) {
     } else {
       triangle_shapes(v, tree.leaves, true, o.cull_back_faces, shapes);
     }
+    triangle_shapes(v, tree.surfaces, true, o.cull_back_faces, shapes);
   }
   std::sort(shapes.begin(), shapes.end(), [](const Shape& a, const Shape& b) {
     return a.depth != b.depth ? a.depth > b.depth : a.order < b.order;

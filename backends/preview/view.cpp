@@ -21,7 +21,7 @@ std::array<View, 2> make_views(const mesh::TreeMesh& tree, int w, int h) {
           std::numeric_limits<double>::max()};
   Vec3 hi = -lo;
   bool any = false;
-  for (const mesh::MeshPart* part : {&tree.bark, &tree.leaves}) {
+  for (const mesh::MeshPart* part : {&tree.bark, &tree.leaves, &tree.surfaces}) {
     for (const Vec3f& p : part->positions) {
       for (int k = 0; k < 3; ++k) {
         lo[k] = std::min(lo[k], double(p[k]));

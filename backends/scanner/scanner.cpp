@@ -139,7 +139,10 @@ ScanResult scan_skeleton(const Skeleton& skeleton, const ScanOptions& o) {
     for (std::uint32_t i : part.indices) indices.push_back(base + i);
   };
   append(m.bark);
-  if (o.leaves) append(m.leaves);
+  if (o.leaves) {
+    append(m.leaves);
+    append(m.surfaces);
+  }
   return scan_triangles(vertices, indices, o);
 }
 

@@ -99,6 +99,7 @@ struct Decoder {
         r.fail_at(at, "expected a new, non-empty symbol name, found \"" + s.name + "\"");
       }
       s.arity = arity(r);
+      s.turtle = ir::polygon_op(s.name);  // the polygon symbols are stored by name
       g.symbols.push_back(std::move(s));
       g.ignored.push_back(0);
     }

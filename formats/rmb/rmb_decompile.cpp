@@ -66,6 +66,7 @@ class Decompiler {
     ast::ModuleDecl md;
     for (std::size_t s = ir::kTurtleSymbolCount; s < g_.symbols.size(); ++s) {
       const std::string& name = g_.symbols[s].name;
+      if (ir::polygon_op(name) != ir::TurtleOp::None) continue;  // `{` `.` `}` `G`: turtle symbols
       if (!is_identifier(name))
         throw DecompileError("module name \"" + name + "\" is not an identifier");
       if (name.size() == 1) continue;

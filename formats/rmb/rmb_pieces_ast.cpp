@@ -216,6 +216,8 @@ class Builder {
       s.twist = name && name->name == "any" ? kRmbTwistAny : std::uint8_t(integer(5));
     } else if (key == "depth") {
       s.depth = integer(kRmbMaxPieceDepth);
+    } else if (key == "skeleton") {
+      // Not stored: a binary holds one lsystem, the tree a skeleton-fitted block is fitted to.
     } else {
       refuse(block_, "the setting '" + key + "'");
     }

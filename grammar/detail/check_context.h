@@ -100,6 +100,7 @@ class CheckContext {
 void check_declarations(CheckContext& cx);  // check_names.cpp: duplicates, constant values
 void check_lsystem(CheckContext& cx, std::uint32_t file, const ast::LSystem& ls);
 void check_lsystem_flow(CheckContext& cx, std::uint32_t file, const ast::LSystem& ls);
+void check_brackets(CheckContext& cx, const ast::LSystem& ls);  // check_brackets.cpp
 void check_pieces(CheckContext& cx, std::uint32_t file, const ast::Pieces& ps);
 void check_voxels(CheckContext& cx, std::uint32_t file, const ast::Voxels& vx);
 void check_unused_constants(CheckContext& cx);  // check_names.cpp

@@ -32,6 +32,7 @@ using boost::fusion::at_c;
 using x3::_attr;
 using x3::_val;
 using x3::char_;
+using x3::eoi;
 using x3::lexeme;
 using x3::lit;
 using x3::raw;
@@ -375,11 +376,17 @@ x3::rule<module_pat_class, ast::ModulePattern> const module_pat = "module";
 x3::rule<struct pattern_seq_class, std::vector<ast::ModulePattern>> const pattern_seq = "modules";
 
 // module_name = ident | "+" | "-" | "&" | "^" | "\" | "/" | "|" | "$" | "[" | "]"
-//             | "!" | "'" | "~" | "%" ;
-// (`-` directly followed by `>` is the arrow; `|` followed by `(` separates alternatives)
-auto const module_name_def = ident[assign] | raw[char_("+&^\\/$[]!'~%")][assign_range] |
+//             | "!" | "'" | "~" | "%" | "{" | "." | "}" ;
+// (`-` directly followed by `>` is the arrow; `|` followed by `(` separates alternatives; a `}`
+// followed by the end of the file or a declaration keyword closes the block, so that a missing
+// `;` before the block's `}` is still reported as one -- the polygon `}` of ABOP 5.2 is always
+// followed by more modules or the production's `;`)
+auto const decl_keyword = kw("lsystem") | kw("pieces") | kw("voxels") | kw("import") | kw("const") |
+                          kw("param") | kw("module");
+auto const module_name_def = ident[assign] | raw[char_("+&^\\/$[]!'~%{.")][assign_range] |
                              raw[lexeme[lit('-') >> !lit('>')]][assign_range] |
-                             (lit('|') >> !lit('('))[([](auto& c) { _val(c) = "|"; })];
+                             (lit('|') >> !lit('('))[([](auto& c) { _val(c) = "|"; })] |
+                             (lit('}') >> !(eoi | decl_keyword))[([](auto& c) { _val(c) = "}"; })];
 // module_call = module_name [ "(" [ expr { "," expr } ] ")" ] ;
 auto const call_exprs_def = lit('(') > -(expr % ',') > lit(')');
 auto const module_call_def = spanned(

@@ -27,7 +27,9 @@ inline std::vector<std::string> example_grammars() {
     std::ifstream in(e.path());
     std::stringstream text;
     text << in.rdbuf();
-    if (text.str().find("lsystem ") == std::string::npos) continue;
+    // An lsystem block of its own (a line starting with it), not one named in a comment.
+    const std::string t = "\n" + text.str();
+    if (t.find("\nlsystem ") == std::string::npos) continue;
     out.push_back(fs::relative(e.path(), root).string());
   }
   std::sort(out.begin(), out.end());

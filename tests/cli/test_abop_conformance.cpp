@@ -142,7 +142,8 @@ int check_rows(const std::string& part) {
 
 TEST_CASE("abop: every row of the expected table belongs to a tested example", "[abop]") {
   const std::vector<std::string> groups = {"fig1_24",   "fig1_25",   "fig1_27", "fig1_31",
-                                           "hilbert3d", "param_p42", "fig2_6",  "fig2_8"};
+                                           "hilbert3d", "param_p42", "fig2_6",  "fig2_8",
+                                           "fig5_5",    "ch5_lily"};
   auto rows = read_tsv("tests/expected/abop.tsv");
   REQUIRE(rows.size() > 100);
   for (const auto& row : rows) {
@@ -173,6 +174,28 @@ TEST_CASE("abop: fig 2.8a-d ternary trees with tropism and F length sums", "[abo
 }
 
 TEST_CASE("abop: 3D Hilbert curve counts", "[abop]") { CHECK(check_rows("hilbert3d") > 0); }
+
+TEST_CASE("abop: fig 5.5 cordate leaf and the lily of the valley (polygons) counts", "[abop]") {
+  CHECK(check_rows("fig5_5") > 0);
+  CHECK(check_rows("ch5_lily") > 0);
+}
+
+TEST_CASE("abop: polygon symbols { . } G counted exactly", "[abop]") {
+  int checked = 0;
+  for (const auto& row : read_tsv("tests/expected/abop_polygons.tsv")) {
+    REQUIRE(row.size() == 6);
+    Run run = ramus({"derive", source_path(row[0]), "-n", row[1], "--stats"});
+    INFO("ramus derive " << row[0] << " -n " << row[1] << " --stats\n" << run.out);
+    REQUIRE(run.status == 0);
+    const Stats s = parse_stats(run.out);
+    CHECK(count_of(s, "{") == std::stoll(row[2]));
+    CHECK(count_of(s, ".") == std::stoll(row[3]));
+    CHECK(count_of(s, "}") == std::stoll(row[4]));
+    CHECK(count_of(s, "G") == std::stoll(row[5]));
+    ++checked;
+  }
+  CHECK(checked >= 15);
+}
 
 TEST_CASE("abop: whole words of short derivations including p. 42", "[abop]") {
   int checked = 0;
@@ -299,4 +322,70 @@ TEST_CASE("abop: ramus check reports no errors on every example and stdlib file"
     }
   }
   CHECK(files >= 24);
+}
+
+namespace {
+
+// How many organs of a skeleton file are polygons, and how many vertices they have in all.
+std::pair<int, int> polygon_organs(const std::string& file_text) {
+  int polygons = 0, vertices = 0;
+  const std::string key = "\"vertices\": [";
+  for (std::size_t at = file_text.find(key); at != std::string::npos;
+       at = file_text.find(key, at + 1)) {
+    ++polygons;
+    const std::size_t end = file_text.find("]]", at);
+    for (std::size_t v = file_text.find('[', at + key.size()); v != std::string::npos && v < end;
+         v = file_text.find('[', v + 1)) {
+      ++vertices;
+    }
+  }
+  return {polygons, vertices};
+}
+
+}  // namespace
+
+TEST_CASE("abop: the turtle's polygons of fig 5.5 and the lily of the valley", "[abop]") {
+  const fs::path dir = fs::path(RAMUS_BINARY_DIR) / "abop_conformance";
+  fs::create_directories(dir);
+  auto skeleton = [&](const std::string& example, const std::string& steps) {
+    const std::string out = (dir / (example + steps + ".json")).string();
+    Run run = ramus({"derive", source_path("examples/abop/" + example + ".ramus"), "-n", steps,
+                     "--skeleton", out});
+    INFO(run.out);
+    REQUIRE(run.status == 0);
+    std::ifstream in(out);
+    std::stringstream text;
+    text << in.rdbuf();
+    return polygon_organs(text.str());
+  };
+  // Cordate leaf after n steps: n polygons `{.].C.}` a side, each a triangle (a point of the
+  // inner axis, the branch point, the point the outer axis C has grown to) except the two
+  // youngest, whose axes have not grown yet: two of their vertices coincide, no surface.
+  for (int n : {3, 10, 20}) {
+    const auto [polygons, vertices] = skeleton("fig5_5_cordate_leaf", std::to_string(n));
+    CHECK(polygons == 2 * n - 4);
+    CHECK(vertices == 3 * (2 * n - 4));
+  }
+  // Lily: each of the 5 petals has n nested polygons, quads between the A and B axes, except the
+  // innermost, whose A and B points both sit at the base: a triangle.
+  for (int n : {2, 5}) {
+    const auto [polygons, vertices] = skeleton("ch5_lily_of_the_valley", std::to_string(n));
+    CHECK(polygons == 5 * n);
+    CHECK(vertices == 5 * (4 * n - 1));
+  }
+}
+
+TEST_CASE("abop: ramus check exits 1 on a closing bracket that closes no branch", "[abop]") {
+  const fs::path dir = fs::path(RAMUS_BINARY_DIR) / "abop_conformance";
+  fs::create_directories(dir);
+  const std::string bad = (dir / "stray_pop.ramus").string();
+  {
+    std::ofstream f(bad);
+    f << "lsystem stray { derive 2; axiom F; F -> F[+F]]F[-F; }\n";
+  }
+  Run check = ramus({"check", bad});
+  CHECK(check.status == 1);
+  CHECK(check.out.find(":1:46: error[E0309]: ']' closes no branch") != std::string::npos);
+  CHECK(check.out.find("error[E0309]: '[' opens a branch that is never closed") !=
+        std::string::npos);
 }

@@ -44,4 +44,13 @@ inline Skeleton skeleton_of(const std::string& text, int steps) {
   return interpret(g, s, t);
 }
 
+// The skeleton of a lowered grammar (possibly altered by the test) at its own `derive N`.
+inline Skeleton skeleton_of_grammar(const ir::Grammar& g) {
+  ModuleString s = derive(g, DeriveOptions{});
+  TurtleOptions t;
+  t.seed = g.settings.seed;
+  t.steps = g.settings.derive;
+  return interpret(g, s, t);
+}
+
 }  // namespace ramus::test

@@ -217,3 +217,15 @@ TEST_CASE("format: long successors break between modules before a branch", "[for
   std::istringstream lines(out);
   for (std::string line; std::getline(lines, line);) CHECK(line.size() <= 100);
 }
+
+TEST_CASE("format: ABOP polygons { . } and a block's closing brace", "[format]") {
+  CHECK(fmt("lsystem s { axiom [A][B]; A -> [ +A { . ] . C . } ; B -> B&.G.}; }") ==
+        "lsystem s {\n  axiom [A][B];\n  A -> [+A{.].C.};\n  B -> B&.G.};\n}\n");
+  check_round_trip("polygons.ramus",
+                   "lsystem s { axiom {.A(0)}; A(t) -> G(5, 1)[-B(t).][A(t + 1)][+B(t).]; }\n");
+  // A `}` before the end of the file or a declaration closes the block, so a missing `;` is
+  // still reported as such.
+  auto p = parse_text("t.ramus", "lsystem s {\n  axiom F;\n  F -> FF\n}\nlsystem t { axiom F; }\n");
+  CHECK_FALSE(p->ok);
+  CHECK(p->errors.find("t.ramus:3:10: error[E0003]: expected ';'") != std::string::npos);
+}

@@ -251,7 +251,7 @@ FIG_1_24 = {  # name: (n, axiom, productions)
 }
 # fig. 1.25 with the leaf polygon {-f+f+f-|-f+f+f} replaced by the organ ~ (see the .ramus file).
 FIG_1_25 = (7, "A", {"A": "[&FL!A]/////'[&FL!A]///////'[&FL!A]", "F": "S/////F", "S": "FL",
-                     "L": "['''^^~]"})
+                     "L": "['''^^{-f+f+f-|-f+f+f}]"})
 HILBERT = (2, "A", {"A": "B-F+CFC+F-D&F^D-F+&&CFC+F+B//",
                     "B": "A&F^CFB^F^D^^-F-D^|F^B|FC^F^A//",
                     "C": "|D^|F^B-F+C^F^A&&FA&F^C+F+B^F^D//",
@@ -275,6 +275,32 @@ FIG_2_8 = {  # d1, d2, a, lr, n
     "fig2_8c_ternary": (112.5, 157.5, 22.5, 1.790, 8),
     "fig2_8d_ternary": (180, 252, 36, 1.070, 6),
 }
+# Chapter 5 polygons (section 5.2): `{` `.` `}` and G are plain symbols to the rewriter.
+FIG_5_5 = (20, "[A][B]", {"A": "[+A{.].C.}", "B": "[-B{.].C.}", "C": "GC"})
+LILY_PETAL = [m("["), m("X", 36), m("A"), m("]"), m("/", 72), m("["), m("X", 36), m("B"), m("]")]
+LILY_AXIOM = LILY_PETAL * 5  # ramus's flower: the book's one-petal axiom five times around
+LILY_N = 18
+
+
+def lily_rules():
+    def a():
+        return [m("["), m("&"), m("G"), m("A"), m("{"), m("."), m("]"), m(".")]
+
+    def b():
+        return [m("B"), m("&"), m("."), m("G"), m("."), m("}")]
+
+    def x(v):
+        return [m("X", v + 4.5)]
+
+    return {"A": a, "B": b, "X": x}
+
+
+def polygon_counts(word):
+    """Counts of { . } G in a word of single-character symbols or of (symbol, params) modules."""
+    syms = [w if isinstance(w, str) else w[0] for w in word]
+    return tuple(syms.count(c) for c in "{.}G")
+
+
 MONOPODIAL_W0 = 0.15  # the initial width of the ramus files (the book's is 10 pixels)
 
 
@@ -292,7 +318,7 @@ def close(a, b, rel=1e-12):
 
 
 def collect():
-    rows, strings = [], []
+    rows, strings, polygons = [], [], []
 
     def d0l(name, n, axiom, prods, string_steps=()):
         for k in steps_for(n):
@@ -305,6 +331,17 @@ def collect():
         d0l(name, n, axiom, prods, (1, 2) if name in ("fig1_24a", "fig1_24f") else ())
     d0l("fig1_25", *FIG_1_25, string_steps=(1, 2))
     d0l("hilbert3d", *HILBERT, string_steps=(1,))
+    d0l("fig5_5_cordate_leaf", *FIG_5_5, string_steps=(1, 2, 3))
+    for name, (n, axiom, prods) in (("fig1_25", FIG_1_25), ("fig5_5_cordate_leaf", FIG_5_5)):
+        for k in steps_for(n):
+            polygons.append((path(name), k) + polygon_counts(rewrite_d0l(axiom, prods, k)))
+    lily = lily_rules()
+    for k in steps_for(LILY_N):
+        word = rewrite_param(LILY_AXIOM, lily, k)
+        rows.append((path("ch5_lily_of_the_valley"), k, len(word), 0, "-"))
+        polygons.append((path("ch5_lily_of_the_valley"), k) + polygon_counts(word))
+        if k <= 2:
+            strings.append((path("ch5_lily_of_the_valley"), k, fmt_word(word)))
 
     to_ramus = str.maketrans("01", "OI")
     for name, (n, axiom, succ) in FIG_1_31.items():
@@ -350,7 +387,7 @@ def collect():
 
     check_stochastic_invariant()
     rows.append((path("fig1_27"), 5, "(5*F-3)/2", "-", "-"))
-    return rows, strings
+    return rows, strings, polygons
 
 
 def check_stochastic_invariant():
@@ -378,8 +415,14 @@ STRINGS_HEADER = """\
 """
 
 
+POLYGONS_HEADER = """\
+# Polygon symbols of derivations of examples/abop/ (ABOP 5.2), written by
+# tests/tools/abop_oracle.py. Columns: file, steps, count of '{', of '.', of '}', of G.
+"""
+
+
 def main():
-    rows, strings = collect()
+    rows, strings, polygons = collect()
     out = os.path.join(ROOT, "tests", "expected")
     os.makedirs(out, exist_ok=True)
     with open(os.path.join(out, "abop.tsv"), "w") as f:
@@ -390,7 +433,11 @@ def main():
         f.write(STRINGS_HEADER)
         for r in strings:
             f.write("\t".join(str(x) for x in r) + "\n")
-    print(f"wrote {len(rows)} rows and {len(strings)} words to {out}")
+    with open(os.path.join(out, "abop_polygons.tsv"), "w") as f:
+        f.write(POLYGONS_HEADER)
+        for r in polygons:
+            f.write("\t".join(str(x) for x in r) + "\n")
+    print(f"wrote {len(rows)} rows, {len(strings)} words and {len(polygons)} polygon counts to {out}")
 
 
 if __name__ == "__main__":
