@@ -7,6 +7,8 @@ packages=(
   catch2 libnanoflann-dev libtbb-dev libzstd-dev
   python3 python3-numpy python3-pywt python3-scipy nodejs
   chromium  # headless browser: three.js loads the pieces outputs (tests/pieces/browser)
+  parallel  # GNU parallel: scripts/run-tiles.sh runs a tiled plot's tiles (tests/forest)
+  slurm-wlm munge  # single-node Slurm for scripts/slurm-local.sh (docs/scale.md; not in make test)
 )
 missing=()
 for p in "${packages[@]}"; do
