@@ -71,9 +71,8 @@ int run_merge(const MergeArgs& a, const GlobalOptions& global) {
   // No tree twice: two bases at one place (a tile file copied over another, say).
   std::vector<std::size_t> order(bases.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::sort(order.begin(), order.end(), [&](std::size_t i, std::size_t j) {
-    return bases[i].first.x < bases[j].first.x;
-  });
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t i, std::size_t j) { return bases[i].first.x < bases[j].first.x; });
   for (std::size_t k = 0; k < order.size(); ++k) {
     for (std::size_t l = k + 1; l < order.size(); ++l) {
       const Vec3 &p = bases[order[k]].first, &q = bases[order[l]].first;
@@ -106,7 +105,8 @@ void add_merge(CLI::App& app, const GlobalOptions& global, std::function<int()>&
       ->required()
       ->check(CLI::Validator(check_skeleton_output, "FILE", "output file"));
   add_up_option(sub, args->up);
-  sub->callback([args, &global, &run] { run = [args, &global] { return run_merge(*args, global); }; });
+  sub->callback(
+      [args, &global, &run] { run = [args, &global] { return run_merge(*args, global); }; });
 }
 
 }  // namespace ramus::cli

@@ -11,7 +11,6 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
-
 #include <optional>
 
 #include "cli/command.h"
@@ -61,8 +60,9 @@ ScanInput read_input(const ReconstructArgs& a) {
       if (a.tile < 0) throw UserError(a.scan + ": a tile manifest needs --tile K");
       const TileManifest m = read_tile_manifest(a.scan);
       if (std::size_t(a.tile) >= m.tiles.size()) {
-        throw UserError(a.scan + ": there is no tile " + std::to_string(a.tile) + " (the manifest has " +
-                        std::to_string(m.tiles.size()) + ", numbered from 0)");
+        throw UserError(a.scan + ": there is no tile " + std::to_string(a.tile) +
+                        " (the manifest has " + std::to_string(m.tiles.size()) +
+                        ", numbered from 0)");
       }
       in.tile = m.tiles[std::size_t(a.tile)];
       path = (std::filesystem::path(a.scan).parent_path() / in.tile->file).string();
@@ -101,7 +101,8 @@ ReconstructResult reconstruct_from_stems(const PointCloud& cloud, const Reconstr
     return r;
   }
   o.roots = stems.bases;
-  ReconstructResult r = run_reconstruction(forest::without_ground(cloud, stems.ground), a.method, o);
+  ReconstructResult r =
+      run_reconstruction(forest::without_ground(cloud, stems.ground), a.method, o);
   // The graph's root is the trunk's lowest surface point; the tree stands at the stem's centre on
   // the ground model, which is also where a tile's core test looks.
   for (Skeleton& t : r.trees) {
@@ -110,7 +111,9 @@ ReconstructResult reconstruct_from_stems(const PointCloud& cloud, const Reconstr
     Vec3& root = t.nodes[roots.front()].position;
     const Vec3* best = nullptr;
     for (const Vec3& b : stems.bases) {
-      if (!best || std::hypot(b.x - root.x, b.y - root.y) < std::hypot(best->x - root.x, best->y - root.y)) best = &b;
+      if (!best ||
+          std::hypot(b.x - root.x, b.y - root.y) < std::hypot(best->x - root.x, best->y - root.y))
+        best = &b;
     }
     if (best && std::hypot(best->x - root.x, best->y - root.y) < 1.0) root = *best;
   }
@@ -123,7 +126,8 @@ int run_reconstruct(const ReconstructArgs& a, const GlobalOptions& global) {
     throw UserError("--bases stems applies to --method bsg only");
   }
   ScanInput in = read_input(a);
-  if (in.tile && a.given_trees) throw UserError("--trees does not apply to a tile: it keeps the trees of its core");
+  if (in.tile && a.given_trees)
+    throw UserError("--trees does not apply to a tile: it keeps the trees of its core");
   const PointCloud& cloud = in.cloud;
   if (a.thin > 0 && !global.quiet) {
     std::fprintf(stderr, "ramus: thinned %zu points to %zu on a %g voxel grid\n", in.read_points,
@@ -137,7 +141,8 @@ int run_reconstruct(const ReconstructArgs& a, const GlobalOptions& global) {
   o.seed = a.seed;
   ReconstructResult r;
   try {
-    r = a.bases == "stems" ? reconstruct_from_stems(cloud, a, o) : run_reconstruction(cloud, a.method, o);
+    r = a.bases == "stems" ? reconstruct_from_stems(cloud, a, o)
+                           : run_reconstruction(cloud, a.method, o);
   } catch (const ReconstructError& e) {
     throw UserError(a.scan + ": " + e.what());
   }
@@ -148,9 +153,9 @@ int run_reconstruct(const ReconstructArgs& a, const GlobalOptions& global) {
   }
   if (in.tile) {
     // A tile keeps the trees whose base lies in its core, none too (an empty skeleton).
-    const forest::CoreTrees kept = forest::keep_core_trees(
-        r.trees, ground_box(in.tile->core), ground_box(in.tile->buffered), data_bounds(cloud),
-        2 * std::max(r.voxel_size, 0.01));
+    const forest::CoreTrees kept =
+        forest::keep_core_trees(r.trees, ground_box(in.tile->core), ground_box(in.tile->buffered),
+                                data_bounds(cloud), 2 * std::max(r.voxel_size, 0.01));
     for (std::size_t k : kept.touching) {
       const Vec3 b = kept.kept[k].nodes[kept.kept[k].roots().front()].position;
       std::fprintf(stderr,
@@ -159,13 +164,15 @@ int run_reconstruct(const ReconstructArgs& a, const GlobalOptions& global) {
                    "`ramus tile` a larger --buffer)\n",
                    in.tile->id, b.x, b.y);
     }
-    write_skeleton_output(join_trees(kept.kept), a.output, std::filesystem::path(a.scan).stem().string(), up);
+    write_skeleton_output(join_trees(kept.kept), a.output,
+                          std::filesystem::path(a.scan).stem().string(), up);
     if (!global.quiet) {
-      std::fprintf(stderr,
-                   "ramus: wrote %s (tile %d: %zu of %zu tree(s) based in its core) from %zu points "
-                   "in %.2f s\n",
-                   a.output.c_str(), in.tile->id, kept.kept.size(), r.trees.size(), cloud.size(),
-                   r.timings.total);
+      std::fprintf(
+          stderr,
+          "ramus: wrote %s (tile %d: %zu of %zu tree(s) based in its core) from %zu points "
+          "in %.2f s\n",
+          a.output.c_str(), in.tile->id, kept.kept.size(), r.trees.size(), cloud.size(),
+          r.timings.total);
     }
     return 0;
   }

@@ -2,9 +2,9 @@
 //                 [--leaves] [--truth OUT.json] [--seed S] [-n N] [-D name=value]...
 // ramus scan FILE... --forest N|--layout L.json --area WxH -o OUT [--station-spacing D] ...
 // Grows the grammar, meshes its tree and ray casts it from the scanner stations: a simulated
-// terrestrial laser scan with a known skeleton, for testing reconstruction (docs/reconstruction.md).
-// With --forest, a plot of N trees of the grammars on a ground plane scanned from a grid of
-// stations, the truth holding every tree (docs/scale.md).
+// terrestrial laser scan with a known skeleton, for testing reconstruction
+// (docs/reconstruction.md). With --forest, a plot of N trees of the grammars on a ground plane
+// scanned from a grid of stations, the truth holding every tree (docs/scale.md).
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -148,8 +148,7 @@ int run_forest_scan(const ScanArgs& a, const GlobalOptions& global) {
   write_cloud(a.output, r.cloud);
   if (!a.truth.empty()) write_skeleton_json(a.truth, join_trees(trees));
   if (!global.quiet) {
-    std::fprintf(stderr,
-                 "ramus: wrote %s (%zu trees, %zu points from %llu rays, %zu station(s))\n",
+    std::fprintf(stderr, "ramus: wrote %s (%zu trees, %zu points from %llu rays, %zu station(s))\n",
                  a.output.c_str(), trees.size(), r.cloud.size(),
                  static_cast<unsigned long long>(r.rays),
                  scanner::station_grid(area, bases, fo).size());
@@ -205,12 +204,13 @@ int run_scan(const ScanArgs& a, const GlobalOptions& global) {
 
 void add_scan(CLI::App& app, const GlobalOptions& global, std::function<int()>& run) {
   auto args = std::make_shared<ScanArgs>();
-  CLI::App* sub =
-      app.add_subcommand("scan", "simulated laser scan of a grammar's tree (ground truth for tests)");
+  CLI::App* sub = app.add_subcommand(
+      "scan", "simulated laser scan of a grammar's tree (ground truth for tests)");
   add_grow_options(sub, args->grow);
   sub->add_option("more", args->more_grammars,
                   "more grammars of a --forest plot (tree i grows from grammar i mod count)");
-  output_path(sub->add_option("-o,--output", args->output, "output point cloud: .ply, .xyz or .las"))
+  output_path(
+      sub->add_option("-o,--output", args->output, "output point cloud: .ply, .xyz or .las"))
       ->required()
       ->check(CLI::Validator(
           [](const std::string& p) -> std::string {

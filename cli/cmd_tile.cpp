@@ -117,7 +117,8 @@ int run_tile(const TileArgs& a, const GlobalOptions& global) {
     // The tile's points back from its spill file, about the tile's centre.
     t->flush();
     PointCloud cloud;
-    cloud.offset = {std::round((e.core.x0 + e.core.x1) / 2), std::round((e.core.y0 + e.core.y1) / 2), 0};
+    cloud.offset = {std::round((e.core.x0 + e.core.x1) / 2),
+                    std::round((e.core.y0 + e.core.y1) / 2), 0};
     cloud.source = e.file;
     cloud.positions.reserve(t->points);
     {
@@ -164,7 +165,8 @@ void add_tile(CLI::App& app, const GlobalOptions& global, std::function<int()>& 
   sub->add_option("--thin", args->thin,
                   "keep one point per voxel of this edge (metres) as the points are read")
       ->check(CLI::PositiveNumber);
-  sub->callback([args, &global, &run] { run = [args, &global] { return run_tile(*args, global); }; });
+  sub->callback(
+      [args, &global, &run] { run = [args, &global] { return run_tile(*args, global); }; });
 }
 
 }  // namespace ramus::cli

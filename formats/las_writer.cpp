@@ -86,9 +86,9 @@ std::string point_cloud_to_las(const PointCloud& c) {
     append_little_endian(out, std::uint16_t(std::clamp(std::lround(intensity), 0L, 65535L)));
     append_little_endian(out, std::uint8_t(0x09));  // return 1 of 1
     append_little_endian(out, std::uint8_t(c.classification.empty() ? 0 : c.classification[i]));
-    append_little_endian(out, std::int8_t(0));     // scan angle rank
-    append_little_endian(out, std::uint8_t(0));    // user data
-    append_little_endian(out, std::uint16_t(0));   // point source id
+    append_little_endian(out, std::int8_t(0));    // scan angle rank
+    append_little_endian(out, std::uint8_t(0));   // user data
+    append_little_endian(out, std::uint16_t(0));  // point source id
   }
   return out;
 }

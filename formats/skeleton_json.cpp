@@ -132,7 +132,6 @@ class Reader : public formats_detail::JsonReader {
     }
     return o;
   }
-
 };
 
 void read_header(Reader& r, const JsonValue& root) {

@@ -30,11 +30,12 @@ void put_box(std::string& out, const TileBox& b) {
 TileBox read_box(formats_detail::JsonReader& r, const JsonValue& v, const std::string& path) {
   r.expect_kind(v, JsonValue::Kind::kArray, path);
   if (v.items.size() != 4) {
-    r.error(v, path, "expected [x0, y0, x1, y1], found " + std::to_string(v.items.size()) +
-                         " values");
+    r.error(v, path,
+            "expected [x0, y0, x1, y1], found " + std::to_string(v.items.size()) + " values");
   }
   double c[4];
-  for (std::size_t k = 0; k < 4; ++k) c[k] = r.number(v.items[k], path + "[" + std::to_string(k) + "]");
+  for (std::size_t k = 0; k < 4; ++k)
+    c[k] = r.number(v.items[k], path + "[" + std::to_string(k) + "]");
   if (!(c[0] < c[2] && c[1] < c[3])) r.error(v, path, "expected x0 < x1 and y0 < y1");
   return {c[0], c[1], c[2], c[3]};
 }
@@ -89,7 +90,8 @@ TileManifest tile_manifest_from_json(std::string_view text, const std::string& n
   m.buffer = r.number(r.member(root, "buffer", top), "buffer");
   if (const JsonValue* thin = root.find("thin")) m.thin = r.number(*thin, "thin");
   if (!(m.size > 0)) r.error(r.member(root, "size", top), "size", "the tile size must be positive");
-  if (!(m.buffer >= 0)) r.error(r.member(root, "buffer", top), "buffer", "the buffer must not be negative");
+  if (!(m.buffer >= 0))
+    r.error(r.member(root, "buffer", top), "buffer", "the buffer must not be negative");
   if (const JsonValue* sources = root.find("sources")) {
     r.expect_kind(*sources, JsonValue::Kind::kArray, "sources");
     for (std::size_t i = 0; i < sources->items.size(); ++i) {
@@ -106,7 +108,9 @@ TileManifest tile_manifest_from_json(std::string_view text, const std::string& n
     TileEntry t;
     const JsonValue& id = r.member(v, "id", path);
     t.id = int(r.integer(id, path + ".id", 0, 1'000'000'000));
-    if (t.id != int(i)) r.error(id, path + ".id", "expected id " + std::to_string(i) + " (ids count from 0 in order)");
+    if (t.id != int(i))
+      r.error(id, path + ".id",
+              "expected id " + std::to_string(i) + " (ids count from 0 in order)");
     t.core = read_box(r, r.member(v, "core", path), path + ".core");
     t.buffered = read_box(r, r.member(v, "buffered", path), path + ".buffered");
     if (t.core.x0 < t.buffered.x0 || t.core.y0 < t.buffered.y0 || t.core.x1 > t.buffered.x1 ||

@@ -25,7 +25,7 @@ struct TileBox {
 struct TileEntry {
   int id = 0;  // what `ramus reconstruct MANIFEST --tile K` names
   TileBox core, buffered;
-  std::string file;      // point file of the buffered box, relative to the manifest's folder
+  std::string file;  // point file of the buffered box, relative to the manifest's folder
   std::uint64_t points = 0;
 };
 

@@ -64,9 +64,8 @@ std::vector<Vec3> station_grid(const PlotArea& area, const std::vector<Vec3>& ba
   const int ny = std::max(1, int(std::lround(area.depth / o.station_spacing)));
   const double sx = area.width / nx, sy = area.depth / ny;
   auto clear = [&](double x, double y) {
-    return std::all_of(bases.begin(), bases.end(), [&](const Vec3& b) {
-      return std::hypot(x - b.x, y - b.y) >= o.clearance;
-    });
+    return std::all_of(bases.begin(), bases.end(),
+                       [&](const Vec3& b) { return std::hypot(x - b.x, y - b.y) >= o.clearance; });
   };
   std::vector<Vec3> stations;
   for (int j = 0; j < ny; ++j) {

@@ -50,8 +50,8 @@ void scan_station(const TriangleBvh& bvh, const Vec3& s, std::uint64_t station,
   bvh.bounds(lo, hi);
   const Window w = window_of(s, lo, hi);
   const double range = std::max(distance(s, (lo + hi) * 0.5), 1e-9);
-  double step = o.angular_step > 0 ? o.angular_step
-                                    : 1.0 / (std::sqrt(std::max(o.density, 1e-12)) * range);
+  double step =
+      o.angular_step > 0 ? o.angular_step : 1.0 / (std::sqrt(std::max(o.density, 1e-12)) * range);
   const double solid = (w.az1 - w.az0) * (w.el1 - w.el0);
   if (solid / (step * step) > double(o.max_rays)) step = std::sqrt(solid / double(o.max_rays));
   const auto rows = std::size_t(std::ceil((w.el1 - w.el0) / step)) + 1;

@@ -18,12 +18,12 @@ struct ScanOptions {
   // Station positions in world coordinates. Empty: one station on the -y side at the height of
   // a tripod (1.5 % of the tree's height above its base), 1.5 tree heights away.
   std::vector<Vec3> from;
-  double noise = 0.0;       // standard deviation of the range error
-  double density = 2000.0;  // points per unit area on a surface facing the station at the
-                            // distance of the tree's centre
-  double max_range = 0.0;   // returns farther than this are lost (0: no limit)
+  double noise = 0.0;         // standard deviation of the range error
+  double density = 2000.0;    // points per unit area on a surface facing the station at the
+                              // distance of the tree's centre
+  double max_range = 0.0;     // returns farther than this are lost (0: no limit)
   double angular_step = 0.0;  // radians between rays; > 0 replaces the step `density` implies
-  bool leaves = false;      // also scan the leaf cards
+  bool leaves = false;        // also scan the leaf cards
   // Hits on triangles from this index on are kept with probability `sparse_keep` only (the
   // ground of a forest plot, which would otherwise outnumber the trees' points many times).
   std::uint32_t sparse_from = 0xffffffffu;

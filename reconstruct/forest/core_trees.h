@@ -17,7 +17,7 @@ struct GroundBox {
 };
 
 struct CoreTrees {
-  std::vector<Skeleton> kept;        // in the order given
+  std::vector<Skeleton> kept;         // in the order given
   std::vector<std::size_t> touching;  // indices into `kept`: within `margin` of the buffered edge
 };
 

@@ -19,7 +19,8 @@ class NodeIndex {
  public:
   NodeIndex(const std::vector<Skeleton>& trees, double near) : near_(near) {
     for (std::size_t t = 0; t < trees.size(); ++t) {
-      for (const SkeletonNode& n : trees[t].nodes) cells_[key(n.position, 0, 0, 0)].push_back({n.position, t});
+      for (const SkeletonNode& n : trees[t].nodes)
+        cells_[key(n.position, 0, 0, 0)].push_back({n.position, t});
     }
   }
   // The tree of the nearest node within `near` of p; -1 when none.
@@ -110,7 +111,8 @@ DetectionScore score_detection(const std::vector<Skeleton>& truth,
   }
   s.precision = s.detected ? double(s.matched) / double(s.detected) : 0;
   s.recall = s.truth ? double(s.matched) / double(s.truth) : 0;
-  s.f_score = s.precision + s.recall > 0 ? 2 * s.precision * s.recall / (s.precision + s.recall) : 0;
+  s.f_score =
+      s.precision + s.recall > 0 ? 2 * s.precision * s.recall / (s.precision + s.recall) : 0;
   return s;
 }
 

@@ -13,10 +13,10 @@ namespace ramus::forest {
 
 struct DetectionScore {
   std::size_t truth = 0, detected = 0;
-  std::size_t matched = 0;  // one to one, bases within the match distance
-  std::size_t missed = 0;   // truth trees neither matched nor merged into another
-  std::size_t merged = 0;   // truth trees whose wood went to a tree matched to another
-  std::size_t split = 0;    // detected trees that are a piece of a matched truth tree
+  std::size_t matched = 0;      // one to one, bases within the match distance
+  std::size_t missed = 0;       // truth trees neither matched nor merged into another
+  std::size_t merged = 0;       // truth trees whose wood went to a tree matched to another
+  std::size_t split = 0;        // detected trees that are a piece of a matched truth tree
   std::size_t false_trees = 0;  // detected trees that are neither matched nor split pieces
   double mean_base_error = 0, max_base_error = 0;  // over matched pairs, horizontal
   double precision = 0, recall = 0, f_score = 0;

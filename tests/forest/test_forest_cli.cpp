@@ -24,22 +24,21 @@ fs::path scratch(const std::string& name) {
 
 // A layout of four trees (two conifers, two broadleaves) on 20 x 20 m, scanned coarsely.
 fs::path small_plot(const fs::path& dir) {
-  write_text(dir / "layout.json",
-             "{\"trees\": [{\"x\": 4, \"y\": 4}, {\"x\": 15, \"y\": 5, \"seed\": 3},\n"
-             " {\"x\": 5, \"y\": 15, \"grammar\": 1}, {\"x\": 15.5, \"y\": 14, \"grammar\": 0}]}\n");
-  const CliResult r = run_ramus({"scan", kTrees + "conifer.ramus", kTrees + "broadleaf.ramus",
-                                 "--layout", (dir / "layout.json").string(), "--area", "20x20",
-                                 "--angular-step", "0.4", "--noise", "0.003", "-o",
-                                 (dir / "plot.las").string(), "--truth",
-                                 (dir / "truth.json").string()});
+  write_text(
+      dir / "layout.json",
+      "{\"trees\": [{\"x\": 4, \"y\": 4}, {\"x\": 15, \"y\": 5, \"seed\": 3},\n"
+      " {\"x\": 5, \"y\": 15, \"grammar\": 1}, {\"x\": 15.5, \"y\": 14, \"grammar\": 0}]}\n");
+  const CliResult r = run_ramus(
+      {"scan", kTrees + "conifer.ramus", kTrees + "broadleaf.ramus", "--layout",
+       (dir / "layout.json").string(), "--area", "20x20", "--angular-step", "0.5", "--noise",
+       "0.003", "-o", (dir / "plot.las").string(), "--truth", (dir / "truth.json").string()});
   INFO(r.out);
   REQUIRE(r.status == 0);
   return dir / "plot.las";
 }
 
 std::string score(const fs::path& truth, const fs::path& forest, const std::string& match) {
-  const CliResult r =
-      run_ramus({"score-trees", truth.string(), forest.string(), "--match", match});
+  const CliResult r = run_ramus({"score-trees", truth.string(), forest.string(), "--match", match});
   INFO(r.out);
   REQUIRE(r.status == 0);
   return r.out;
@@ -62,8 +61,8 @@ TEST_CASE("a small plot tiled and run with GNU parallel gives the untiled trees"
   INFO(untiled);
   CHECK(untiled.find("matched         4 ") != std::string::npos);
 
-  r = run_ramus({"tile", plot.string(), "-o", (dir / "tiles").string(), "--size", "10",
-                 "--buffer", "6"});
+  r = run_ramus(
+      {"tile", plot.string(), "-o", (dir / "tiles").string(), "--size", "15", "--buffer", "6"});
   INFO(r.out);
   REQUIRE(r.status == 0);
   const ramus::TileManifest m = ramus::read_tile_manifest((dir / "tiles/manifest.json").string());
@@ -74,8 +73,8 @@ TEST_CASE("a small plot tiled and run with GNU parallel gives the untiled trees"
 
   REQUIRE(system("command -v parallel >/dev/null") == 0);  // scripts/install-deps.sh installs it
   const std::string script = std::string(RAMUS_SOURCE_DIR) + "/scripts/run-tiles.sh";
-  const std::string cmd = "RAMUS=" + shell_quote(RAMUS_EXE) + " bash " + shell_quote(script) +
-                          " " + shell_quote((dir / "tiles").string()) + " --jobs 2 2>&1";
+  const std::string cmd = "RAMUS=" + shell_quote(RAMUS_EXE) + " bash " + shell_quote(script) + " " +
+                          shell_quote((dir / "tiles").string()) + " --jobs 2 2>&1";
   REQUIRE(system(cmd.c_str()) == 0);
   const fs::path forest = dir / "tiles/forest.json";
   REQUIRE(fs::exists(forest));

@@ -1,7 +1,6 @@
 // Units of the forest-plot pipeline (docs/scale.md): trees joined and split, placement, the
 // LAS writer, voxel thinning, the tile manifest, the core test and the detection score.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "backends/scanner/forest.h"
@@ -139,7 +138,8 @@ TEST_CASE("tile manifests round-trip and malformed ones name the place", "[fores
                       Catch::Contains("m.json: line") && Catch::Contains("tiles[1].id"));
   bad = text;
   bad.replace(bad.find("\"core\": [0, 0, 20, 20]"), 22, "\"core\": [0, 0, 40, 20]");
-  REQUIRE_THROWS_WITH(tile_manifest_from_json(bad, "m.json"), Catch::Contains("inside the buffered"));
+  REQUIRE_THROWS_WITH(tile_manifest_from_json(bad, "m.json"),
+                      Catch::Contains("inside the buffered"));
   REQUIRE_THROWS_WITH(tile_manifest_from_json("{\"format\": \"ramus-tiles\"}", "m.json"),
                       Catch::Contains("version"));
 }
@@ -180,7 +180,8 @@ TEST_CASE("detection scores match, miss, merge and split trees", "[forest][score
   n.position = {30, 0, 5};
   n.parent = 0;
   split_piece.add(n);
-  const std::vector<Skeleton> detected{stick(0.2, 0), one, stick(30, 0), split_piece, stick(50, 50)};
+  const std::vector<Skeleton> detected{stick(0.2, 0), one, stick(30, 0), split_piece,
+                                       stick(50, 50)};
   const forest::DetectionScore s = forest::score_detection(truth, detected);
   CHECK(s.matched == 3);
   CHECK(s.merged == 1);
