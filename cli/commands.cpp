@@ -24,6 +24,9 @@ void add_decompile(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_infer(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_compare(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_lsp(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_tile(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_merge(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_score_trees(CLI::App&, const GlobalOptions&, std::function<int()>&);
 
 const std::vector<CommandSpec>& command_table() {
   static const std::vector<CommandSpec> table = {
@@ -44,6 +47,9 @@ const std::vector<CommandSpec>& command_table() {
       {"reconstruct", add_reconstruct},
       {"classify", add_classify},
       {"scan", add_scan},
+      {"tile", add_tile},
+      {"merge", add_merge},
+      {"score-trees", add_score_trees},
       {"dump", add_dump},
       {"decompile", add_decompile},
       {"lsp", add_lsp},

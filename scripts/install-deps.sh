@@ -8,10 +8,11 @@ packages=(
   python3 python3-numpy python3-pywt python3-scipy nodejs
   nlohmann-json3-dev  # JSON of the language server (lsp/): header only, keeps integer ids exact
   chromium  # headless browser: three.js loads the pieces outputs (tests/pieces/browser)
-  libdraco-dev libmeshoptimizer-dev nlohmann-json3-dev  # --compress draco|meshopt (gltf_compress)
+  libdraco-dev libmeshoptimizer-dev  # --compress draco|meshopt (gltf_compress)
   # Blender's and Godot's glTF importers load the demo tree (scripts/check-engines.sh); with Xvfb
   # for Godot's editor, which imports assets. ~63 s to install on the project machine.
   blender godot3 xvfb xauth
+  parallel  # GNU parallel: scripts/run-tiles.sh runs a tiled plot's tiles (tests/forest)
 )
 missing=()
 for p in "${packages[@]}"; do

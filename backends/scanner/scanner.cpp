@@ -50,7 +50,8 @@ void scan_station(const TriangleBvh& bvh, const Vec3& s, std::uint64_t station,
   bvh.bounds(lo, hi);
   const Window w = window_of(s, lo, hi);
   const double range = std::max(distance(s, (lo + hi) * 0.5), 1e-9);
-  double step = 1.0 / (std::sqrt(std::max(o.density, 1e-12)) * range);
+  double step =
+      o.angular_step > 0 ? o.angular_step : 1.0 / (std::sqrt(std::max(o.density, 1e-12)) * range);
   const double solid = (w.az1 - w.az0) * (w.el1 - w.el0);
   if (solid / (step * step) > double(o.max_rays)) step = std::sqrt(solid / double(o.max_rays));
   const auto rows = std::size_t(std::ceil((w.el1 - w.el0) / step)) + 1;
@@ -70,6 +71,7 @@ void scan_station(const TriangleBvh& bvh, const Vec3& s, std::uint64_t station,
       const double limit = o.max_range > 0 ? o.max_range : 1e300;
       if (!bvh.intersect(s, d, 1e-9, limit, h)) continue;
       Rng rng = Rng::stream(o.seed, station, (std::uint64_t(r) << 32) | c);
+      if (h.triangle >= o.sparse_from && rng.uniform01() >= o.sparse_keep) continue;
       const double t = o.noise > 0 ? h.t + rng.normal(0, o.noise) : h.t;
       hits[r].push_back(s + d * t);
       hit_tris[r].push_back(h.triangle);
@@ -128,10 +130,9 @@ mesh::TreeMesh scanned_mesh(const Skeleton& skeleton) {
 
 }  // namespace
 
-ScanResult scan_skeleton(const Skeleton& skeleton, const ScanOptions& o) {
+void append_scanned_triangles(const Skeleton& skeleton, bool leaves, std::vector<Vec3>& vertices,
+                              std::vector<std::uint32_t>& indices) {
   const mesh::TreeMesh m = scanned_mesh(skeleton);
-  std::vector<Vec3> vertices;
-  std::vector<std::uint32_t> indices;
   auto append = [&](const mesh::MeshPart& part) {
     const auto base = std::uint32_t(vertices.size());
     // Back to world coordinates in double: a georeferenced tree is meshed about a local origin.
@@ -139,10 +140,16 @@ ScanResult scan_skeleton(const Skeleton& skeleton, const ScanOptions& o) {
     for (std::uint32_t i : part.indices) indices.push_back(base + i);
   };
   append(m.bark);
-  if (o.leaves) {
+  if (leaves) {
     append(m.leaves);
     append(m.surfaces);
   }
+}
+
+ScanResult scan_skeleton(const Skeleton& skeleton, const ScanOptions& o) {
+  std::vector<Vec3> vertices;
+  std::vector<std::uint32_t> indices;
+  append_scanned_triangles(skeleton, o.leaves, vertices, indices);
   return scan_triangles(vertices, indices, o);
 }
 

@@ -18,11 +18,16 @@ struct ScanOptions {
   // Station positions in world coordinates. Empty: one station on the -y side at the height of
   // a tripod (1.5 % of the tree's height above its base), 1.5 tree heights away.
   std::vector<Vec3> from;
-  double noise = 0.0;       // standard deviation of the range error
-  double density = 2000.0;  // points per unit area on a surface facing the station at the
-                            // distance of the tree's centre
-  double max_range = 0.0;   // returns farther than this are lost (0: no limit)
-  bool leaves = false;      // also scan the leaf cards
+  double noise = 0.0;         // standard deviation of the range error
+  double density = 2000.0;    // points per unit area on a surface facing the station at the
+                              // distance of the tree's centre
+  double max_range = 0.0;     // returns farther than this are lost (0: no limit)
+  double angular_step = 0.0;  // radians between rays; > 0 replaces the step `density` implies
+  bool leaves = false;        // also scan the leaf cards
+  // Hits on triangles from this index on are kept with probability `sparse_keep` only (the
+  // ground of a forest plot, which would otherwise outnumber the trees' points many times).
+  std::uint32_t sparse_from = 0xffffffffu;
+  double sparse_keep = 1.0;
   std::uint64_t max_rays = 200'000'000;  // per station; the angular step grows to respect it
   std::uint64_t seed = 1;
 };
@@ -40,6 +45,11 @@ struct ScanError : std::runtime_error {
 // Scans triangles (world positions, index triples).
 ScanResult scan_triangles(const std::vector<Vec3>& vertices,
                           const std::vector<std::uint32_t>& indices, const ScanOptions& options);
+
+// Appends the triangles scan_skeleton casts at (bark tubes, then the leaf cards when `leaves`) in
+// world coordinates; indices are shifted by the vertices already in `vertices`.
+void append_scanned_triangles(const Skeleton& skeleton, bool leaves, std::vector<Vec3>& vertices,
+                              std::vector<std::uint32_t>& indices);
 
 // Meshes the skeleton with the mesh back end (bark tubes, leaves when asked) and scans it.
 ScanResult scan_skeleton(const Skeleton& skeleton, const ScanOptions& options);
