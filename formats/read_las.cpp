@@ -12,7 +12,6 @@
 #include <cstring>
 
 #include "formats/detail/reader_util.h"
-#include "formats/las_file.h"
 #include "formats/laz/laz_points.h"
 
 namespace ramus::formats_detail {
@@ -262,12 +261,7 @@ PointCloud read_las(std::string_view bytes, const std::string& name, const ReadO
   return cloud;
 }
 
-}  // namespace ramus::formats_detail
-
-namespace ramus {
-
-std::string decompress_laz(std::string_view bytes, const std::string& name) {
-  using namespace formats_detail;
+LasLayout read_las_layout(std::string_view bytes, const std::string& name) {
   if (bytes.substr(0, 4) != "LASF") {
     fail_at_byte(name, 0, "expected the LAS signature 'LASF', found " + quoted(bytes.substr(0, 4)));
   }
@@ -276,25 +270,21 @@ std::string decompress_laz(std::string_view bytes, const std::string& name) {
   parse_fixed_fields(bytes, name, h);
   parse_point_fields(bytes, name, h);
   check_vlrs(bytes, name, h);
-  if (h.laszip_vlr == 0) fail(name, "the file is not LAZ-compressed (no 'laszip encoded' VLR)");
-  const std::size_t vlr_start = h.laszip_vlr - 54;
-  std::string out;
-  out.reserve(h.point_offset +
-              std::size_t(std::min<std::uint64_t>(h.count, bytes.size() * 4)) * h.record_length);
-  out.append(bytes.substr(0, vlr_start));
-  out.append(bytes.substr(h.laszip_vlr + h.laszip_vlr_length,
-                          h.point_offset - h.laszip_vlr - h.laszip_vlr_length));
-  const std::uint32_t new_offset = std::uint32_t(out.size());
-  const std::uint32_t vlrs = h.vlr_count - 1;
-  std::memcpy(out.data() + kPointOffset, &new_offset, 4);
-  std::memcpy(out.data() + kVlrCount, &vlrs, 4);
-  out[kFormat] = char(h.format);
-  laz::LazInput in{bytes,          name,    h.laszip_vlr, h.laszip_vlr_length,
-                   h.point_offset, h.count, h.format,     h.record_length};
-  laz::decode_laz_points(in, [&](const std::uint8_t* recs, std::size_t n, std::uint64_t) {
-    out.append(reinterpret_cast<const char*>(recs), n * h.record_length);
-  });
-  return out;
+  LasLayout l;
+  l.minor = h.minor;
+  l.header_size = h.header_size;
+  l.point_offset = h.point_offset;
+  l.vlr_count = h.vlr_count;
+  l.vlr_end = h.header_size;
+  for (std::uint32_t i = 0; i < h.vlr_count; ++i) {
+    l.vlr_end += 54 + load_le<std::uint16_t>(bytes.data() + l.vlr_end + 20);
+  }
+  l.format = h.format;
+  l.record_length = h.record_length;
+  l.count = h.count;
+  l.laszip_vlr = h.laszip_vlr;
+  l.laszip_vlr_length = h.laszip_vlr_length;
+  return l;
 }
 
-}  // namespace ramus
+}  // namespace ramus::formats_detail

@@ -1,0 +1,245 @@
+#include "formats/laz/item_encoders.h"
+
+#include <cstring>
+#include <limits>
+#include <vector>
+
+#include "formats/laz/integer_encoder.h"
+#include "formats/laz/v2_tables.h"
+
+namespace ramus::laz {
+namespace {
+
+// Mirror of Point10Decoder (item_decoders.cpp): same contexts, same predictions.
+class Point10Encoder final : public ItemEncoder {
+ public:
+  void init(const std::uint8_t* raw) override {
+    for (int i = 0; i < 16; ++i) {
+      dx_median_[i].reset();
+      dy_median_[i].reset();
+      last_intensity_[i] = 0;
+    }
+    for (auto& h : last_height_) h = 0;
+    changed_.reset();
+    intensity_.reset();
+    scan_angle_[0].reset();
+    scan_angle_[1].reset();
+    source_.reset();
+    for (auto* models : {&bit_byte_, &classification_, &user_data_}) {
+      for (auto& m : *models) {
+        if (m) m->reset();
+      }
+    }
+    dx_.reset();
+    dy_.reset();
+    z_.reset();
+    std::memcpy(last_, raw, 20);
+  }
+
+  void encode(RangeEncoder& enc, const std::uint8_t* item) override {
+    const std::uint32_t r = item[14] & 7, n = (item[14] >> 3) & 7;
+    const std::uint32_t m = kReturnContext[n][r], l = return_level(n, r);
+    const std::uint16_t intensity = get_le<std::uint16_t>(item + 12);
+    const std::uint32_t changed =
+        (std::uint32_t(last_[14] != item[14]) << 5) |
+        (std::uint32_t(last_intensity_[m] != intensity) << 4) |
+        (std::uint32_t(last_[15] != item[15]) << 3) | (std::uint32_t(last_[16] != item[16]) << 2) |
+        (std::uint32_t(last_[17] != item[17]) << 1) |
+        std::uint32_t(get_le<std::uint16_t>(last_ + 18) != get_le<std::uint16_t>(item + 18));
+    enc.encode_symbol(changed_, changed);
+    if (changed & 32) enc.encode_symbol(model(bit_byte_, last_[14]), item[14]);
+    if (changed & 16) {
+      intensity_.encode(enc, last_intensity_[m], intensity, m < 3 ? m : 3);
+      last_intensity_[m] = intensity;
+    }
+    if (changed & 8) enc.encode_symbol(model(classification_, last_[15]), item[15]);
+    if (changed & 4) {
+      enc.encode_symbol(scan_angle_[(item[14] >> 6) & 1],
+                        fold_u8(std::int32_t(item[16]) - std::int32_t(last_[16])));
+    }
+    if (changed & 2) enc.encode_symbol(model(user_data_, last_[17]), item[17]);
+    if (changed & 1) {
+      source_.encode(enc, get_le<std::uint16_t>(last_ + 18), get_le<std::uint16_t>(item + 18));
+    }
+
+    const std::int32_t dx =
+        std::int32_t(get_le<std::uint32_t>(item) - get_le<std::uint32_t>(last_));
+    dx_.encode(enc, dx_median_[m].get(), dx, n == 1);
+    dx_median_[m].add(dx);
+
+    std::uint32_t k = dx_.k();
+    const std::int32_t dy =
+        std::int32_t(get_le<std::uint32_t>(item + 4) - get_le<std::uint32_t>(last_ + 4));
+    dy_.encode(enc, dy_median_[m].get(), dy, (n == 1) + (k < 20 ? k & ~1u : 20));
+    dy_median_[m].add(dy);
+
+    k = (dx_.k() + dy_.k()) / 2;
+    const std::int32_t z = get_le<std::int32_t>(item + 8);
+    z_.encode(enc, last_height_[l], z, (n == 1) + (k < 18 ? k & ~1u : 18));
+    last_height_[l] = z;
+    std::memcpy(last_, item, 20);
+  }
+
+ private:
+  static SymbolModel& model(std::vector<std::unique_ptr<SymbolModel>>& models, std::uint8_t prev) {
+    if (models.empty()) models.resize(256);
+    auto& m = models[prev];
+    if (!m) m = std::make_unique<SymbolModel>(256);
+    return *m;
+  }
+
+  std::uint8_t last_[20] = {};
+  std::uint16_t last_intensity_[16] = {};
+  StreamingMedian5 dx_median_[16], dy_median_[16];
+  std::int32_t last_height_[8] = {};
+  SymbolModel changed_{64};
+  IntegerEncoder intensity_{16, 4};
+  SymbolModel scan_angle_[2] = {SymbolModel(256), SymbolModel(256)};
+  IntegerEncoder source_{16};
+  std::vector<std::unique_ptr<SymbolModel>> bit_byte_, classification_, user_data_;
+  IntegerEncoder dx_{32, 2}, dy_{32, 22}, z_{32, 20};
+};
+
+// GPS time with a subset of the codes the decoder knows: a difference to the previous time of
+// the current sequence (as a correction of its last difference), "unchanged", or a full time.
+// Multiples of the last difference and interleaved sequences are not searched for: valid LAZ,
+// somewhat larger than LASzip's own for multi-return data.
+class GpsTime11Encoder final : public ItemEncoder {
+ public:
+  static constexpr std::uint32_t kUnchanged = 511, kCodeFull = 512, kTotal = 516;
+
+  void init(const std::uint8_t* raw) override {
+    multi_.reset();
+    zero_diff_.reset();
+    ic_.reset();
+    time_ = get_le<std::uint64_t>(raw);
+    diff_ = 0;
+  }
+
+  void encode(RangeEncoder& enc, const std::uint8_t* item) override {
+    const std::uint64_t t = get_le<std::uint64_t>(item);
+    const std::int64_t d = std::int64_t(t - time_);
+    const bool small = d >= std::numeric_limits<std::int32_t>::min() &&
+                       d <= std::numeric_limits<std::int32_t>::max();
+    if (diff_ == 0) {
+      if (d == 0) {
+        enc.encode_symbol(zero_diff_, 0);
+      } else if (small) {
+        enc.encode_symbol(zero_diff_, 1);
+        ic_.encode(enc, 0, std::int32_t(d), 0);
+        diff_ = std::int32_t(d);
+      } else {
+        enc.encode_symbol(zero_diff_, 2);
+        full(enc, t);
+      }
+    } else if (d == 0) {
+      enc.encode_symbol(multi_, kUnchanged);
+    } else if (small) {
+      enc.encode_symbol(multi_, 1);
+      ic_.encode(enc, diff_, std::int32_t(d), 1);
+    } else {
+      enc.encode_symbol(multi_, kCodeFull);
+      full(enc, t);
+    }
+    time_ = t;
+  }
+
+ private:
+  // The decoder starts a new sequence from a full time; we keep using that one.
+  void full(RangeEncoder& enc, std::uint64_t t) {
+    ic_.encode(enc, std::int32_t(time_ >> 32), std::int32_t(t >> 32), 8);
+    enc.write_int(std::uint32_t(t));
+    diff_ = 0;
+  }
+
+  std::uint64_t time_ = 0;
+  std::int32_t diff_ = 0;
+  SymbolModel multi_{kTotal};
+  SymbolModel zero_diff_{6};
+  IntegerEncoder ic_{32, 9};
+};
+
+// Mirror of Rgb12Decoder.
+class Rgb12Encoder final : public ItemEncoder {
+ public:
+  void init(const std::uint8_t* raw) override {
+    used_.reset();
+    for (auto& m : diff_) m.reset();
+    for (int i = 0; i < 3; ++i) last_[i] = get_le<std::uint16_t>(raw + 2 * i);
+  }
+
+  void encode(RangeEncoder& enc, const std::uint8_t* item) override {
+    std::int32_t c[3];
+    for (int i = 0; i < 3; ++i) c[i] = get_le<std::uint16_t>(item + 2 * i);
+    const std::int32_t p[3] = {last_[0], last_[1], last_[2]};
+    std::uint32_t sym = 0;
+    for (int i = 0; i < 3; ++i) {
+      sym |= std::uint32_t((p[i] & 0xff) != (c[i] & 0xff)) << (2 * i);
+      sym |= std::uint32_t((p[i] & 0xff00) != (c[i] & 0xff00)) << (2 * i + 1);
+    }
+    const bool colour = c[0] != c[1] || c[0] != c[2];
+    sym |= std::uint32_t(colour) << 6;
+    enc.encode_symbol(used_, sym);
+    std::int32_t dl = (c[0] & 255) - (p[0] & 255), dh = (c[0] >> 8) - (p[0] >> 8);
+    if (sym & 1) enc.encode_symbol(diff_[0], fold_u8(dl));
+    if (sym & 2) enc.encode_symbol(diff_[1], fold_u8(dh));
+    if (colour) {
+      if (sym & 4) enc.encode_symbol(diff_[2], fold_u8((c[1] & 255) - clamp_u8(dl + (p[1] & 255))));
+      if (sym & 16) {
+        dl = (dl + (c[1] & 255) - (p[1] & 255)) / 2;
+        enc.encode_symbol(diff_[4], fold_u8((c[2] & 255) - clamp_u8(dl + (p[2] & 255))));
+      }
+      if (sym & 8) enc.encode_symbol(diff_[3], fold_u8((c[1] >> 8) - clamp_u8(dh + (p[1] >> 8))));
+      if (sym & 32) {
+        dh = (dh + (c[1] >> 8) - (p[1] >> 8)) / 2;
+        enc.encode_symbol(diff_[5], fold_u8((c[2] >> 8) - clamp_u8(dh + (p[2] >> 8))));
+      }
+    }
+    for (int i = 0; i < 3; ++i) last_[i] = std::uint16_t(c[i]);
+  }
+
+ private:
+  std::uint16_t last_[3] = {};
+  SymbolModel used_{128};
+  SymbolModel diff_[6] = {SymbolModel(256), SymbolModel(256), SymbolModel(256),
+                          SymbolModel(256), SymbolModel(256), SymbolModel(256)};
+};
+
+class BytesEncoder final : public ItemEncoder {
+ public:
+  explicit BytesEncoder(std::size_t n) : last_(n), models_(n, SymbolModel(256)) {}
+  void init(const std::uint8_t* raw) override {
+    for (auto& m : models_) m.reset();
+    std::memcpy(last_.data(), raw, last_.size());
+  }
+  void encode(RangeEncoder& enc, const std::uint8_t* item) override {
+    for (std::size_t i = 0; i < last_.size(); ++i) {
+      enc.encode_symbol(models_[i], fold_u8(std::int32_t(item[i]) - std::int32_t(last_[i])));
+    }
+    std::memcpy(last_.data(), item, last_.size());
+  }
+
+ private:
+  std::vector<std::uint8_t> last_;
+  std::vector<SymbolModel> models_;
+};
+
+}  // namespace
+
+std::unique_ptr<ItemEncoder> make_v2_encoder(const Item& item) {
+  if (item.version != 2) return nullptr;
+  switch (item.type) {
+    case ItemType::kPoint10:
+      return item.size == 20 ? std::make_unique<Point10Encoder>() : nullptr;
+    case ItemType::kGpsTime11:
+      return item.size == 8 ? std::make_unique<GpsTime11Encoder>() : nullptr;
+    case ItemType::kRgb12:
+      return item.size == 6 ? std::make_unique<Rgb12Encoder>() : nullptr;
+    case ItemType::kByte:
+      return item.size > 0 ? std::make_unique<BytesEncoder>(item.size) : nullptr;
+    default:
+      return nullptr;
+  }
+}
+
+}  // namespace ramus::laz
