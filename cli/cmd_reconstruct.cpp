@@ -133,7 +133,7 @@ void add_reconstruct(CLI::App& app, const GlobalOptions& global, std::function<i
   auto args = std::make_shared<ReconstructArgs>();
   CLI::App* sub =
       app.add_subcommand("reconstruct", "scan -> tree skeletons -> mesh (Livny et al.)");
-  sub->add_option("scan", args->scan, "point cloud: .ply, .xyz/.txt/.asc/.csv, .las, .pcd")
+  sub->add_option("scan", args->scan, "point cloud: .ply, .xyz/.txt/.asc/.csv, .las, .laz, .pcd")
       ->required();
   output_path(sub->add_option("-o,--output", args->output,
                               "output: .glb, .gltf, .obj, .ply (mesh) or .json"))
