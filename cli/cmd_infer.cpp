@@ -12,10 +12,9 @@ namespace ramus::cli {
 void add_infer(CLI::App& app, const GlobalOptions& global, std::function<int()>& run) {
   auto args = std::make_shared<InferCommonArgs>();
   CLI::App* sub = app.add_subcommand("infer", "infer a grammar from a scan");
-  sub->add_option(
-         "INPUT", args->input,
-         "point cloud (.ply .xyz .txt .asc .las .laz .pcd); --method skeleton also takes a "
-         "skeleton .json or a .ramus grammar")
+  sub->add_option("INPUT", args->input,
+                  "point cloud (.ply .xyz .txt .asc .las .laz .pcd); --method skeleton also takes a "
+                  "skeleton .json or a .ramus grammar")
       ->required();
   output_path(sub->add_option("-o,--output", args->output, "the grammar to write (.ramus)"))
       ->required();

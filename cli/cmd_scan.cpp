@@ -1,8 +1,7 @@
 // ramus scan FILE -o OUT.ply|.xyz [--from x,y,z]... [--noise S] [--density D] [--max-range R]
 //                 [--leaves] [--truth OUT.json] [--seed S] [-n N] [-D name=value]...
 // Grows the grammar, meshes its tree and ray casts it from the scanner stations: a simulated
-// terrestrial laser scan with a known skeleton, for testing reconstruction
-// (docs/reconstruction.md).
+// terrestrial laser scan with a known skeleton, for testing reconstruction (docs/reconstruction.md).
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -67,8 +66,8 @@ int run_scan(const ScanArgs& a, const GlobalOptions& global) {
 
 void add_scan(CLI::App& app, const GlobalOptions& global, std::function<int()>& run) {
   auto args = std::make_shared<ScanArgs>();
-  CLI::App* sub = app.add_subcommand(
-      "scan", "simulated laser scan of a grammar's tree (ground truth for tests)");
+  CLI::App* sub =
+      app.add_subcommand("scan", "simulated laser scan of a grammar's tree (ground truth for tests)");
   add_grow_options(sub, args->grow);
   output_path(sub->add_option("-o,--output", args->output, "output point cloud: .ply or .xyz"))
       ->required()
@@ -89,8 +88,7 @@ void add_scan(CLI::App& app, const GlobalOptions& global, std::function<int()>& 
       ->check(CLI::NonNegativeNumber);
   sub->add_flag("--leaves", args->leaves, "scan the leaf cards too (default: wood only)");
   output_path(sub->add_option("--truth", args->truth, "also write the tree's skeleton as JSON"));
-  sub->callback(
-      [args, &global, &run] { run = [args, &global] { return run_scan(*args, global); }; });
+  sub->callback([args, &global, &run] { run = [args, &global] { return run_scan(*args, global); }; });
 }
 
 }  // namespace ramus::cli

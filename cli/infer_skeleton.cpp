@@ -16,9 +16,9 @@
 #include "cli/skeleton_source.h"
 #include "core/atomic_file.h"
 #include "formats/skeleton_json.h"
+#include "reconstruct/merge/branch_merge.h"
 #include "infer/skeleton/scaffold_grammar.h"
 #include "infer/skeleton/skeleton_grammar.h"
-#include "reconstruct/merge/branch_merge.h"
 
 namespace ramus::cli {
 
