@@ -59,9 +59,10 @@ std::string compress_las(std::string_view bytes, const std::string& name,
   laz::LaszipVlr vlr;
   if (chunk_size == 0 || !laz::v2_items(l.format, l.record_length, vlr, chunk_size)) {
     fail_at_byte(name, kFormat,
-                 "point format " + std::to_string(l.format) +
-                     " needs LASzip's wave packet or layered compressor, which ramus does not "
-                     "write (it compresses formats 0-3)");
+                 "point format " + std::to_string(l.format) + " with " +
+                     std::to_string(l.record_length) +
+                     "-byte records is not compressed by ramus (it writes formats 0-3 and "
+                     "format 6 without extra bytes)");
   }
   const std::size_t have = (bytes.size() - l.point_offset) / l.record_length;
   if (l.count > have) {

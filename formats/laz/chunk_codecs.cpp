@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "formats/laz/item_decoders.h"
+#include "formats/laz/layered_decoder.h"
 
 namespace ramus::laz {
 namespace {
@@ -52,11 +53,8 @@ class PointwiseChunks final : public ChunkCodec {
 
 std::unique_ptr<ChunkCodec> make_chunk_codec(const LaszipVlr& vlr, unsigned point_format,
                                              std::string& why) {
-  if (vlr.compressor == kCompressorLayered) {
-    why = "LAZ layered chunks (compressor 3, point format " + std::to_string(point_format) +
-          ") are not decoded yet";
-    return nullptr;
-  }
+  if (vlr.compressor == kCompressorLayered) return make_layered_decoder(vlr, why);
+  (void)point_format;
   std::vector<std::unique_ptr<ItemDecoder>> items;
   std::vector<std::size_t> sizes;
   for (const auto& item : vlr.items) {

@@ -10,6 +10,7 @@
 
 #include "formats/laz/integer_encoder.h"
 #include "formats/laz/item_encoders.h"
+#include "formats/laz/layered_encoder.h"
 
 namespace ramus::laz {
 namespace {
@@ -26,6 +27,13 @@ void append(std::string& s, T v) {
 bool v2_items(unsigned format, std::size_t record_length, LaszipVlr& out,
               std::uint32_t chunk_size) {
   static constexpr std::size_t kSize[] = {20, 28, 26, 34};
+  if (format == 6 && record_length == 30) {  // the layered point14 coder
+    out = {};
+    out.compressor = kCompressorLayered;
+    out.chunk_size = chunk_size;
+    out.items.push_back({ItemType::kPoint14, 30, 3});
+    return true;
+  }
   if (format > 3 || record_length < kSize[format]) return false;
   out = {};
   out.compressor = kCompressorChunked;
@@ -65,7 +73,7 @@ std::string compress_points(const LaszipVlr& vlr, const std::uint8_t* records, s
   std::vector<std::unique_ptr<ItemEncoder>> items;
   std::vector<std::size_t> sizes;
   for (const auto& item : vlr.items) {
-    items.push_back(make_v2_encoder(item));
+    if (item.version == 2) items.push_back(make_v2_encoder(item));
     sizes.push_back(item.size);
   }
   const std::size_t record = vlr.record_length();
@@ -77,6 +85,11 @@ std::string compress_points(const LaszipVlr& vlr, const std::uint8_t* records, s
     chunk_counts.push_back(std::uint32_t(n));
     const std::size_t start = out.size();
     const std::uint8_t* rec = records + first * record;
+    if (vlr.compressor == kCompressorLayered) {
+      encode_point14_chunk(rec, n, out);
+      chunk_bytes.push_back(std::uint32_t(out.size() - start));
+      continue;
+    }
     out.insert(out.end(), rec, rec + record);
     std::size_t at = 0;
     for (std::size_t k = 0; k < items.size(); at += sizes[k++]) items[k]->init(rec + at);

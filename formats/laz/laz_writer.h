@@ -1,4 +1,5 @@
-// LAZ writing with the version 2 items (point formats 0-3, plus extra bytes): the laszip VLR
+// LAZ writing with the version 2 items (point formats 0-3, plus extra bytes) and the layered
+// point14 item (point format 6): the laszip VLR
 // payload and the compressed point block (chunk table offset, chunks of 50,000 points, chunk
 // table) that replace the raw records of a LAS file.
 #pragma once
@@ -14,7 +15,8 @@ namespace ramus::laz {
 
 inline constexpr std::uint32_t kDefaultChunkSize = 50000;
 
-// The items of point format 0-3 records of `record_length` bytes (the rest extra bytes).
+// The items of point format 0-3 records of `record_length` bytes (the rest extra bytes; LASzip
+// 2 pointwise chunks), or of point format 6 records of 30 bytes (point14 v3, layered chunks).
 // Returns false for formats this writer cannot compress.
 bool v2_items(unsigned format, std::size_t record_length, LaszipVlr& out,
               std::uint32_t chunk_size = kDefaultChunkSize);

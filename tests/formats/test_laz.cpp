@@ -231,3 +231,21 @@ TEST_CASE("laz: treels_spruce re-compressed by us reads back identically, also b
   write_file_atomically(laz.string(), ours);
   CHECK(oracle_decompress(laz, scratch() / "spruce_ours_oracle.las") == las);
 }
+
+TEST_CASE("laz: pytlidar_tree_1.las (format 6) compressed by us reads back identically",
+          "[laz][real][layered]") {
+  const fs::path original = shared_data("pytlidar_tree_1.las");
+  const std::string las = slurp(original);
+  const std::string laz = compress_las(las, original.string());
+  ReadReport report;
+  const PointCloud c = read_point_cloud_bytes(laz, Format::kLas, "tree.laz", {}, &report);
+  CHECK(report.variant.find("LAZ 1.4, point format 6, 30-byte records, layered chunks "
+                            "(compressor 3), point14 v3") == 0);
+  CHECK(c.size() == 90239);
+  CHECK(laz.size() < las.size() / 3);
+  CHECK(decompress_laz(laz, "tree.laz") == las);
+  if (!oracle_available()) return;
+  const fs::path file = scratch() / "pytlidar_ours.laz";
+  write_file_atomically(file.string(), laz);
+  CHECK(oracle_decompress(file, scratch() / "pytlidar_oracle.las") == las);
+}

@@ -1,0 +1,251 @@
+#include "formats/laz/layered_decoder.h"
+
+#include <cstring>
+#include <vector>
+
+#include "formats/laz/integer_decoder.h"
+#include "formats/laz/point14_context.h"
+#include "formats/laz/range_decoder.h"
+
+namespace ramus::laz {
+namespace {
+
+using Context = Point14Context<IntegerDecoder>;
+
+class Point14Layers final : public ChunkCodec {
+ public:
+  Point14Layers(std::size_t extra) : extra_(extra) {}
+
+  void start(const std::uint8_t* begin, const std::uint8_t* end, std::size_t) override {
+    begin_ = begin;
+    end_ = end;
+    first_ = true;
+  }
+
+  void next(std::uint8_t* out) override {
+    if (first_) {
+      first_ = false;
+      start_chunk(out);
+      return;
+    }
+    decode(out);
+  }
+
+ private:
+  // First record raw; then u32 point count, u32 bytes per layer, the layers back to back.
+  void start_chunk(std::uint8_t* out) {
+    const std::size_t record = 30 + extra_;
+    const std::size_t head = record + 4 + 4 * kLayers14;
+    if (std::size_t(end_ - begin_) < head) throw StreamOverrun{};
+    std::memcpy(out, begin_, record);
+    const std::uint8_t* p = begin_ + record + 4;
+    const std::uint8_t* layer = begin_ + head;
+    for (int i = 0; i < kLayers14; ++i) {
+      const std::uint32_t size = get_le<std::uint32_t>(p + 4 * i);
+      if (std::size_t(end_ - layer) < size) throw StreamOverrun{};
+      present_[i] = size > 0;
+      layer_begin_[i] = layer;
+      layer_end_[i] = layer + size;
+      layer += size;
+    }
+    // The returns/XY layer is always there; the others only when their field changes.
+    started_ = false;
+    const Point14 first = Point14::unpack(out);
+    for (auto& c : contexts_) c.unused = true;
+    current_ = first.channel;
+    contexts_[current_].start(first);
+  }
+
+  void decode(std::uint8_t* out) {
+    if (!started_) {  // the streams start with the second point (a one-point chunk has none)
+      for (int i = 0; i < kLayers14; ++i) {
+        if (i == kReturnsXY || present_[i]) dec_[i].start(layer_begin_[i], layer_end_[i]);
+      }
+      started_ = true;
+    }
+    RangeDecoder& d = dec_[kReturnsXY];
+    Context* c = &contexts_[current_];
+    const Point14& prev = c->last;
+    std::uint32_t lpr =
+        (prev.r == 1 ? 1u : 0u) + (prev.r >= prev.n ? 2u : 0u) + (prev.gps_changed ? 4u : 0u);
+    const std::uint32_t changed = d.decode_symbol(c->changed[lpr]);
+    if (changed & 64) {  // another scanner channel: its own context, made from this point
+      const std::uint32_t channel = (current_ + d.decode_symbol(c->channel) + 1) % 4;
+      if (contexts_[channel].unused) contexts_[channel].start(c->last);
+      current_ = channel;
+      c = &contexts_[current_];
+      c->last.channel = std::uint8_t(channel);
+    }
+    Point14& p = c->last;
+    const bool source_changed = changed & 32, gps_changed = changed & 16,
+               angle_changed = changed & 8;
+    const std::uint32_t last_n = p.n, last_r = p.r;
+    if (changed & 4) {
+      p.n = std::uint8_t(d.decode_symbol(Context::lazy(c->n_models, last_n, 16)));
+    }
+    switch (changed & 3) {
+      case 0:
+        break;
+      case 1:
+        p.r = std::uint8_t((last_r + 1) % 16);
+        break;
+      case 2:
+        p.r = std::uint8_t((last_r + 15) % 16);
+        break;
+      default:
+        if (gps_changed) {
+          p.r = std::uint8_t(d.decode_symbol(Context::lazy(c->r_models, last_r, 16)));
+        } else {
+          p.r = std::uint8_t((last_r + d.decode_symbol(c->r_gps_same) + 2) % 16);
+        }
+    }
+    const std::uint32_t n = p.n, r = p.r;
+    const std::uint32_t m = return_context6(n, r), l = return_level8(n, r);
+    const std::uint32_t cpr = (r == 1 ? 1u : 0u) + (r >= n ? 2u : 0u);
+    const std::uint32_t xy = (m << 1) | (gps_changed ? 1u : 0u);
+
+    const std::int32_t dx = c->dx.decode(d, c->dx_median[xy].get(), n == 1);
+    p.x = std::int32_t(std::uint32_t(p.x) + std::uint32_t(dx));
+    c->dx_median[xy].add(dx);
+    std::uint32_t k = c->dx.k();
+    const std::int32_t dy =
+        c->dy.decode(d, c->dy_median[xy].get(), (n == 1) + (k < 20 ? k & ~1u : 20));
+    p.y = std::int32_t(std::uint32_t(p.y) + std::uint32_t(dy));
+    c->dy_median[xy].add(dy);
+
+    if (present_[kZ]) {
+      k = (c->dx.k() + c->dy.k()) / 2;
+      p.z = c->z.decode(dec_[kZ], c->last_z[l], (n == 1) + (k < 18 ? k & ~1u : 18));
+      c->last_z[l] = p.z;
+    }
+    if (present_[kClass]) {
+      const std::uint32_t ctx = ((p.cls & 0x1fu) << 1) + (cpr == 3 ? 1u : 0u);
+      p.cls = std::uint8_t(dec_[kClass].decode_symbol(Context::lazy(c->cls_models, ctx, 256)));
+    }
+    if (present_[kFlags]) {
+      p.flags =
+          std::uint8_t(dec_[kFlags].decode_symbol(Context::lazy(c->flag_models, p.flags, 64)));
+    }
+    if (present_[kIntensity]) {
+      const std::uint32_t at = (cpr << 1) | (gps_changed ? 1u : 0u);
+      p.intensity =
+          std::uint16_t(c->intensity.decode(dec_[kIntensity], c->last_intensity[at], cpr));
+      c->last_intensity[at] = p.intensity;
+    }
+    if (present_[kAngle] && angle_changed) {
+      p.angle = std::int16_t(c->angle.decode(dec_[kAngle], p.angle, gps_changed ? 1 : 0));
+    }
+    if (present_[kUser]) {
+      p.user =
+          std::uint8_t(dec_[kUser].decode_symbol(Context::lazy(c->user_models, p.user / 4, 256)));
+    }
+    if (present_[kSource] && source_changed) {
+      p.source = std::uint16_t(c->source.decode(dec_[kSource], p.source));
+    }
+    if (present_[kGps] && gps_changed) {
+      decode_gps(*c, dec_[kGps]);
+      p.gps = c->gps_time[c->gps_last];
+    }
+    p.gps_changed = false;
+    p.pack(out);
+    p.gps_changed = gps_changed;
+  }
+
+  // GPS times of the layered coder: like gpstime11 v2 without the "unchanged" code (the
+  // returns layer says whether the time changed) and with a 5-symbol zero-difference model.
+  static void decode_gps(Context& c, RangeDecoder& d) {
+    for (;;) {
+      std::uint32_t& last = c.gps_last;
+      if (c.gps_diff[last] == 0) {
+        const std::uint32_t multi = d.decode_symbol(c.gps_zero_diff);
+        if (multi == 0) {
+          c.gps_diff[last] = c.gps.decode(d, 0, 0);
+          c.gps_time[last] += std::uint64_t(std::int64_t(c.gps_diff[last]));
+          c.gps_extreme[last] = 0;
+        } else if (multi == 1) {
+          full_time(c, d);
+        } else {
+          last = (last + multi - 1) & 3;
+          continue;
+        }
+        return;
+      }
+      const std::int32_t multi = std::int32_t(d.decode_symbol(c.gps_multi));
+      if (multi == 1) {
+        c.gps_time[last] += std::uint64_t(std::int64_t(c.gps.decode(d, c.gps_diff[last], 1)));
+        c.gps_extreme[last] = 0;
+      } else if (multi < kGps14CodeFull) {
+        std::int32_t diff;
+        auto times = [](std::int32_t a, std::int32_t b) {
+          return std::int32_t(std::uint32_t(a) * std::uint32_t(b));
+        };
+        auto extreme = [&](std::int32_t v) {
+          if (++c.gps_extreme[last] > 3) {
+            c.gps_diff[last] = v;
+            c.gps_extreme[last] = 0;
+          }
+        };
+        if (multi == 0) {
+          diff = c.gps.decode(d, 0, 7);
+          extreme(diff);
+        } else if (multi < kGps14Multi) {
+          diff = c.gps.decode(d, times(multi, c.gps_diff[last]), multi < 10 ? 2 : 3);
+        } else if (multi == kGps14Multi) {
+          diff = c.gps.decode(d, times(kGps14Multi, c.gps_diff[last]), 4);
+          extreme(diff);
+        } else {
+          const std::int32_t minus = kGps14Multi - multi;
+          if (minus > kGps14MultiMinus) {
+            diff = c.gps.decode(d, times(minus, c.gps_diff[last]), 5);
+          } else {
+            diff = c.gps.decode(d, times(kGps14MultiMinus, c.gps_diff[last]), 6);
+            extreme(diff);
+          }
+        }
+        c.gps_time[last] += std::uint64_t(std::int64_t(diff));
+      } else if (multi == kGps14CodeFull) {
+        full_time(c, d);
+      } else {
+        last = (last + std::uint32_t(multi - kGps14CodeFull)) & 3;
+        continue;
+      }
+      return;
+    }
+  }
+
+  static void full_time(Context& c, RangeDecoder& d) {
+    c.gps_next = (c.gps_next + 1) & 3;
+    const std::uint32_t high =
+        std::uint32_t(c.gps.decode(d, std::int32_t(c.gps_time[c.gps_last] >> 32), 8));
+    c.gps_time[c.gps_next] = (std::uint64_t(high) << 32) | d.read_int();
+    c.gps_last = c.gps_next;
+    c.gps_diff[c.gps_last] = 0;
+    c.gps_extreme[c.gps_last] = 0;
+  }
+
+  std::size_t extra_;
+  const std::uint8_t* begin_ = nullptr;
+  const std::uint8_t* end_ = nullptr;
+  bool first_ = true, started_ = false;
+  bool present_[kLayers14] = {};
+  const std::uint8_t* layer_begin_[kLayers14] = {};
+  const std::uint8_t* layer_end_[kLayers14] = {};
+  RangeDecoder dec_[kLayers14];
+  Context contexts_[4];
+  std::uint32_t current_ = 0;
+};
+
+}  // namespace
+
+std::unique_ptr<ChunkCodec> make_layered_decoder(const LaszipVlr& vlr, std::string& why) {
+  if (vlr.items.size() == 1 && vlr.items[0].type == ItemType::kPoint14 &&
+      vlr.items[0].version == 3 && vlr.items[0].size == 30) {
+    return std::make_unique<Point14Layers>(0);
+  }
+  why =
+      "LAZ layered items other than point14 v3 alone (rgb14, nir14, wave packets, extra "
+      "bytes of point formats 7-10) are not decoded yet";
+  return nullptr;
+}
+
+}  // namespace ramus::laz
