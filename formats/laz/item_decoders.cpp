@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "formats/laz/integer_decoder.h"
+#include "formats/laz/rgb_coding.h"
 #include "formats/laz/v2_tables.h"
 
 namespace ramus::laz {
@@ -258,65 +259,21 @@ class GpsTime11Decoder final : public ItemDecoder {
   IntegerDecoder ic_{32, 9};
 };
 
-// RGB (three u16, 6 bytes): a 7-bit mask says which bytes changed; green and blue are
-// predicted from red's change (Isenburg 2013, section 4.3).
+// RGB (three u16, 6 bytes), see rgb_coding.h.
 class Rgb12Decoder final : public ItemDecoder {
  public:
   void init(const std::uint8_t* raw) override {
-    used_.reset();
-    for (auto& m : diff_) m.reset();
+    models_.reset();
     for (int i = 0; i < 3; ++i) last_[i] = get_le<std::uint16_t>(raw + 2 * i);
   }
-
   void decode(RangeDecoder& dec, std::uint8_t* out) override {
-    const std::uint32_t sym = dec.decode_symbol(used_);
-    std::uint32_t c[3];
-    c[0] = (sym & 1) ? fold_u8(std::int32_t(dec.decode_symbol(diff_[0]) + (last_[0] & 255)))
-                     : last_[0] & 0xff;
-    c[0] |=
-        (sym & 2)
-            ? std::uint32_t(fold_u8(std::int32_t(dec.decode_symbol(diff_[1]) + (last_[0] >> 8))))
-                  << 8
-            : last_[0] & 0xff00;
-    if (sym & 64) {
-      std::int32_t d = std::int32_t(c[0] & 255) - std::int32_t(last_[0] & 255);
-      c[1] = (sym & 4) ? fold_u8(std::int32_t(dec.decode_symbol(diff_[2])) +
-                                 clamp_u8(d + std::int32_t(last_[1] & 255)))
-                       : last_[1] & 0xff;
-      if (sym & 16) {
-        d = (d + std::int32_t(c[1] & 255) - std::int32_t(last_[1] & 255)) / 2;
-        c[2] = fold_u8(std::int32_t(dec.decode_symbol(diff_[4])) +
-                       clamp_u8(d + std::int32_t(last_[2] & 255)));
-      } else {
-        c[2] = last_[2] & 0xff;
-      }
-      d = std::int32_t(c[0] >> 8) - std::int32_t(last_[0] >> 8);
-      c[1] |= (sym & 8) ? std::uint32_t(fold_u8(std::int32_t(dec.decode_symbol(diff_[3])) +
-                                                clamp_u8(d + std::int32_t(last_[1] >> 8))))
-                              << 8
-                        : last_[1] & 0xff00;
-      if (sym & 32) {
-        d = (d + std::int32_t(c[1] >> 8) - std::int32_t(last_[1] >> 8)) / 2;
-        c[2] |= std::uint32_t(fold_u8(std::int32_t(dec.decode_symbol(diff_[5])) +
-                                      clamp_u8(d + std::int32_t(last_[2] >> 8))))
-                << 8;
-      } else {
-        c[2] |= last_[2] & 0xff00;
-      }
-    } else {
-      c[1] = c[2] = c[0];  // grey
-    }
-    for (int i = 0; i < 3; ++i) {
-      last_[i] = std::uint16_t(c[i]);
-      put_le<std::uint16_t>(out + 2 * i, last_[i]);
-    }
+    decode_rgb(dec, models_, last_, last_);
+    for (int i = 0; i < 3; ++i) put_le<std::uint16_t>(out + 2 * i, last_[i]);
   }
 
  private:
   std::uint16_t last_[3] = {};
-  SymbolModel used_{128};
-  SymbolModel diff_[6] = {SymbolModel(256), SymbolModel(256), SymbolModel(256),
-                          SymbolModel(256), SymbolModel(256), SymbolModel(256)};
+  RgbModels models_;
 };
 
 // Extra bytes: each byte's difference to the previous point's byte, one model per byte.

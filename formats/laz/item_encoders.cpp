@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "formats/laz/integer_encoder.h"
+#include "formats/laz/rgb_coding.h"
 #include "formats/laz/v2_tables.h"
 
 namespace ramus::laz {
@@ -163,46 +164,19 @@ class GpsTime11Encoder final : public ItemEncoder {
 class Rgb12Encoder final : public ItemEncoder {
  public:
   void init(const std::uint8_t* raw) override {
-    used_.reset();
-    for (auto& m : diff_) m.reset();
+    models_.reset();
     for (int i = 0; i < 3; ++i) last_[i] = get_le<std::uint16_t>(raw + 2 * i);
   }
-
   void encode(RangeEncoder& enc, const std::uint8_t* item) override {
-    std::int32_t c[3];
-    for (int i = 0; i < 3; ++i) c[i] = get_le<std::uint16_t>(item + 2 * i);
-    const std::int32_t p[3] = {last_[0], last_[1], last_[2]};
-    std::uint32_t sym = 0;
-    for (int i = 0; i < 3; ++i) {
-      sym |= std::uint32_t((p[i] & 0xff) != (c[i] & 0xff)) << (2 * i);
-      sym |= std::uint32_t((p[i] & 0xff00) != (c[i] & 0xff00)) << (2 * i + 1);
-    }
-    const bool colour = c[0] != c[1] || c[0] != c[2];
-    sym |= std::uint32_t(colour) << 6;
-    enc.encode_symbol(used_, sym);
-    std::int32_t dl = (c[0] & 255) - (p[0] & 255), dh = (c[0] >> 8) - (p[0] >> 8);
-    if (sym & 1) enc.encode_symbol(diff_[0], fold_u8(dl));
-    if (sym & 2) enc.encode_symbol(diff_[1], fold_u8(dh));
-    if (colour) {
-      if (sym & 4) enc.encode_symbol(diff_[2], fold_u8((c[1] & 255) - clamp_u8(dl + (p[1] & 255))));
-      if (sym & 16) {
-        dl = (dl + (c[1] & 255) - (p[1] & 255)) / 2;
-        enc.encode_symbol(diff_[4], fold_u8((c[2] & 255) - clamp_u8(dl + (p[2] & 255))));
-      }
-      if (sym & 8) enc.encode_symbol(diff_[3], fold_u8((c[1] >> 8) - clamp_u8(dh + (p[1] >> 8))));
-      if (sym & 32) {
-        dh = (dh + (c[1] >> 8) - (p[1] >> 8)) / 2;
-        enc.encode_symbol(diff_[5], fold_u8((c[2] >> 8) - clamp_u8(dh + (p[2] >> 8))));
-      }
-    }
-    for (int i = 0; i < 3; ++i) last_[i] = std::uint16_t(c[i]);
+    std::uint16_t rgb[3];
+    for (int i = 0; i < 3; ++i) rgb[i] = get_le<std::uint16_t>(item + 2 * i);
+    encode_rgb(enc, models_, last_, rgb);
+    for (int i = 0; i < 3; ++i) last_[i] = rgb[i];
   }
 
  private:
   std::uint16_t last_[3] = {};
-  SymbolModel used_{128};
-  SymbolModel diff_[6] = {SymbolModel(256), SymbolModel(256), SymbolModel(256),
-                          SymbolModel(256), SymbolModel(256), SymbolModel(256)};
+  RgbModels models_;
 };
 
 class BytesEncoder final : public ItemEncoder {
