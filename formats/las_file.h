@@ -20,8 +20,8 @@ std::string decompress_laz(std::string_view bytes, const std::string& name);
 
 // The LAZ file of an uncompressed LAS file's bytes (the inverse of decompress_laz): a laszip VLR
 // is added after the others and the records are compressed in chunks of `chunk_size` points.
-// Point formats 0-3 (with any extra bytes; LASzip 2 items) and format 6 without extra bytes
-// (the layered point14 coder); other formats are a FormatError.
+// Point formats 0-3 (LASzip 2 items) and 6-8 (the layered coder), with any extra bytes; formats
+// 4-5 and 9-10 (wave packets) are a FormatError.
 std::string compress_las(std::string_view bytes, const std::string& name,
                          std::uint32_t chunk_size = 50000);
 

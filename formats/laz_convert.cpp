@@ -62,7 +62,7 @@ std::string compress_las(std::string_view bytes, const std::string& name,
                  "point format " + std::to_string(l.format) + " with " +
                      std::to_string(l.record_length) +
                      "-byte records is not compressed by ramus (it writes formats 0-3 and "
-                     "format 6 without extra bytes)");
+                     "6-8)");
   }
   const std::size_t have = (bytes.size() - l.point_offset) / l.record_length;
   if (l.count > have) {

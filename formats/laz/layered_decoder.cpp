@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "formats/laz/integer_decoder.h"
+#include "formats/laz/layered_items.h"
 #include "formats/laz/point14_context.h"
 #include "formats/laz/range_decoder.h"
 
@@ -14,7 +15,20 @@ using Context = Point14Context<IntegerDecoder>;
 
 class Point14Layers final : public ChunkCodec {
  public:
-  Point14Layers(std::size_t extra) : extra_(extra) {}
+  explicit Point14Layers(std::vector<std::unique_ptr<LayerItemDecoder>> items,
+                         std::vector<std::size_t> sizes)
+      : items_(std::move(items)), sizes_(std::move(sizes)) {
+    record_ = 30;
+    layers_ = kLayers14;
+    for (std::size_t i = 0; i < items_.size(); ++i) {
+      record_ += sizes_[i];
+      layers_ += items_[i]->layers();
+    }
+    dec_.resize(layers_);
+    present_.resize(layers_);
+    layer_begin_.resize(layers_);
+    layer_end_.resize(layers_);
+  }
 
   void start(const std::uint8_t* begin, const std::uint8_t* end, std::size_t) override {
     begin_ = begin;
@@ -34,16 +48,15 @@ class Point14Layers final : public ChunkCodec {
  private:
   // First record raw; then u32 point count, u32 bytes per layer, the layers back to back.
   void start_chunk(std::uint8_t* out) {
-    const std::size_t record = 30 + extra_;
-    const std::size_t head = record + 4 + 4 * kLayers14;
+    const std::size_t head = record_ + 4 + 4 * layers_;
     if (std::size_t(end_ - begin_) < head) throw StreamOverrun{};
-    std::memcpy(out, begin_, record);
-    const std::uint8_t* p = begin_ + record + 4;
+    std::memcpy(out, begin_, record_);
+    const std::uint8_t* p = begin_ + record_ + 4;
     const std::uint8_t* layer = begin_ + head;
-    for (int i = 0; i < kLayers14; ++i) {
+    for (std::size_t i = 0; i < layers_; ++i) {
       const std::uint32_t size = get_le<std::uint32_t>(p + 4 * i);
       if (std::size_t(end_ - layer) < size) throw StreamOverrun{};
-      present_[i] = size > 0;
+      present_[i] = size > 0 ? 1 : 0;
       layer_begin_[i] = layer;
       layer_end_[i] = layer + size;
       layer += size;
@@ -54,11 +67,15 @@ class Point14Layers final : public ChunkCodec {
     for (auto& c : contexts_) c.unused = true;
     current_ = first.channel;
     contexts_[current_].start(first);
+    std::size_t at = 30;
+    for (std::size_t i = 0; i < items_.size(); at += sizes_[i++]) {
+      items_[i]->start(out + at, current_);
+    }
   }
 
   void decode(std::uint8_t* out) {
     if (!started_) {  // the streams start with the second point (a one-point chunk has none)
-      for (int i = 0; i < kLayers14; ++i) {
+      for (std::size_t i = 0; i < layers_; ++i) {
         if (i == kReturnsXY || present_[i]) dec_[i].start(layer_begin_[i], layer_end_[i]);
       }
       started_ = true;
@@ -149,6 +166,10 @@ class Point14Layers final : public ChunkCodec {
     p.gps_changed = false;
     p.pack(out);
     p.gps_changed = gps_changed;
+    std::size_t at = 30, layer = kLayers14;
+    for (std::size_t i = 0; i < items_.size(); at += sizes_[i], layer += items_[i++]->layers()) {
+      items_[i]->decode(&dec_[layer], &present_[layer], out + at, current_);
+    }
   }
 
   // GPS times of the layered coder: like gpstime11 v2 without the "unchanged" code (the
@@ -223,14 +244,15 @@ class Point14Layers final : public ChunkCodec {
     c.gps_extreme[c.gps_last] = 0;
   }
 
-  std::size_t extra_;
+  std::vector<std::unique_ptr<LayerItemDecoder>> items_;  // after point14
+  std::vector<std::size_t> sizes_;
+  std::size_t record_ = 30, layers_ = kLayers14;
   const std::uint8_t* begin_ = nullptr;
   const std::uint8_t* end_ = nullptr;
   bool first_ = true, started_ = false;
-  bool present_[kLayers14] = {};
-  const std::uint8_t* layer_begin_[kLayers14] = {};
-  const std::uint8_t* layer_end_[kLayers14] = {};
-  RangeDecoder dec_[kLayers14];
+  std::vector<std::uint8_t> present_;  // 1: the layer has bytes
+  std::vector<const std::uint8_t*> layer_begin_, layer_end_;
+  std::vector<RangeDecoder> dec_;
   Context contexts_[4];
   std::uint32_t current_ = 0;
 };
@@ -238,14 +260,25 @@ class Point14Layers final : public ChunkCodec {
 }  // namespace
 
 std::unique_ptr<ChunkCodec> make_layered_decoder(const LaszipVlr& vlr, std::string& why) {
-  if (vlr.items.size() == 1 && vlr.items[0].type == ItemType::kPoint14 &&
-      vlr.items[0].version == 3 && vlr.items[0].size == 30) {
-    return std::make_unique<Point14Layers>(0);
+  const auto& items = vlr.items;
+  if (items.empty() || items[0].type != ItemType::kPoint14 || items[0].version != 3 ||
+      items[0].size != 30) {
+    why = "LAZ layered chunks must start with the point14 v3 item";
+    return nullptr;
   }
-  why =
-      "LAZ layered items other than point14 v3 alone (rgb14, nir14, wave packets, extra "
-      "bytes of point formats 7-10) are not decoded yet";
-  return nullptr;
+  std::vector<std::unique_ptr<LayerItemDecoder>> rest;
+  std::vector<std::size_t> sizes;
+  for (std::size_t i = 1; i < items.size(); ++i) {
+    auto d = make_layer_item_decoder(items[i]);
+    if (!d) {
+      why = "LAZ item " + item_name(items[i]) + " (" + std::to_string(items[i].size) +
+            " bytes) is not supported";
+      return nullptr;
+    }
+    rest.push_back(std::move(d));
+    sizes.push_back(items[i].size);
+  }
+  return std::make_unique<Point14Layers>(std::move(rest), std::move(sizes));
 }
 
 }  // namespace ramus::laz

@@ -1,6 +1,6 @@
 // Decoder of layered chunks (compressor 3): the first record raw, the chunk's point count, the
-// byte size of every layer, then the layers. Items: point14 v3 (point formats 6, and 7-10 are
-// not decoded yet: their rgb14/nir14/wavepacket14 layers are refused with a clear message).
+// byte size of every layer, then the layers. Items: point14 v3, then rgb14 or rgbnir14 v3, then
+// byte14 v3 (point formats 6-8 with extra bytes); wave packets (formats 9-10) are refused.
 #pragma once
 
 #include <memory>

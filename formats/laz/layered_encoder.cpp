@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "formats/laz/integer_encoder.h"
+#include "formats/laz/layered_items.h"
 #include "formats/laz/point14_context.h"
 #include "formats/laz/range_encoder.h"
 
@@ -115,25 +116,18 @@ class Point14Encoder {
     p.gps_changed = gps_changed;
   }
 
-  // Count, layer sizes, layers; unchanged layers empty.
-  void finish(std::uint32_t points, std::vector<std::uint8_t>& out) {
+  std::uint32_t channel() const { return current_; }
+
+  // The nine layers; unchanged layers empty.
+  void finish(std::vector<std::vector<std::uint8_t>>& layers) {
     changed_[kReturnsXY] = true;
     for (int i = 0; i < kLayers14; ++i) {
       enc_[i]->finish();
-      if (!changed_[i] || points < 2) bytes_[i].clear();
+      layers.push_back(changed_[i] ? bytes_[i] : std::vector<std::uint8_t>{});
     }
-    append(out, points);
-    for (int i = 0; i < kLayers14; ++i) append(out, std::uint32_t(bytes_[i].size()));
-    for (int i = 0; i < kLayers14; ++i) out.insert(out.end(), bytes_[i].begin(), bytes_[i].end());
   }
 
  private:
-  static void append(std::vector<std::uint8_t>& out, std::uint32_t v) {
-    std::uint8_t b[4];
-    std::memcpy(b, &v, 4);
-    out.insert(out.end(), b, b + 4);
-  }
-
   // A subset of the decoder's codes: a 32-bit difference as a correction of the sequence's
   // last difference, or a full time. Valid for every decoder; LASzip's own search for
   // multiples and interleaved sequences would compress multi-return times further.
@@ -175,15 +169,53 @@ class Point14Encoder {
   std::uint32_t current_ = 0;
 };
 
+void append(std::vector<std::uint8_t>& out, std::uint32_t v) {
+  std::uint8_t b[4];
+  std::memcpy(b, &v, 4);
+  out.insert(out.end(), b, b + 4);
+}
+
 }  // namespace
 
-void encode_point14_chunk(const std::uint8_t* records, std::size_t n,
-                          std::vector<std::uint8_t>& out) {
+bool layered_items_supported(const std::vector<Item>& items) {
+  if (items.empty() || items[0].type != ItemType::kPoint14 || items[0].version != 3) return false;
+  for (std::size_t i = 1; i < items.size(); ++i) {
+    if (!make_layer_item_encoder(items[i])) return false;
+  }
+  return true;
+}
+
+void encode_layered_chunk(const std::vector<Item>& items, const std::uint8_t* records,
+                          std::size_t n, std::vector<std::uint8_t>& out) {
   if (n == 0) return;
-  out.insert(out.end(), records, records + 30);
-  Point14Encoder enc(Point14::unpack(records));
-  for (std::size_t i = 1; i < n; ++i) enc.encode(Point14::unpack(records + 30 * i));
-  enc.finish(std::uint32_t(n), out);
+  std::size_t record = 0;
+  for (const auto& item : items) record += item.size;
+  out.insert(out.end(), records, records + record);
+  const Point14 first = Point14::unpack(records);
+  Point14Encoder point(first);
+  std::vector<std::unique_ptr<LayerItemEncoder>> rest;
+  std::vector<std::size_t> offsets;
+  std::size_t at = 30;
+  for (std::size_t i = 1; i < items.size(); at += items[i++].size) {
+    rest.push_back(make_layer_item_encoder(items[i]));
+    offsets.push_back(at);
+    rest.back()->start(records + at, first.channel);
+  }
+  for (std::size_t k = 1; k < n; ++k) {
+    const std::uint8_t* rec = records + k * record;
+    point.encode(Point14::unpack(rec));
+    for (std::size_t i = 0; i < rest.size(); ++i)
+      rest[i]->encode(rec + offsets[i], point.channel());
+  }
+  std::vector<std::vector<std::uint8_t>> layers;
+  point.finish(layers);
+  for (auto& r : rest) r->finish(layers);
+  if (n < 2) {
+    for (auto& l : layers) l.clear();  // a one-point chunk needs no streams
+  }
+  append(out, std::uint32_t(n));
+  for (const auto& l : layers) append(out, std::uint32_t(l.size()));
+  for (const auto& l : layers) out.insert(out.end(), l.begin(), l.end());
 }
 
 }  // namespace ramus::laz

@@ -27,11 +27,17 @@ void append(std::string& s, T v) {
 bool v2_items(unsigned format, std::size_t record_length, LaszipVlr& out,
               std::uint32_t chunk_size) {
   static constexpr std::size_t kSize[] = {20, 28, 26, 34};
-  if (format == 6 && record_length == 30) {  // the layered point14 coder
+  if (format >= 6 && format <= 8) {  // the layered coder
+    static constexpr std::size_t kSize14[] = {30, 36, 38};
+    if (record_length < kSize14[format - 6]) return false;
     out = {};
     out.compressor = kCompressorLayered;
     out.chunk_size = chunk_size;
     out.items.push_back({ItemType::kPoint14, 30, 3});
+    if (format == 7) out.items.push_back({ItemType::kRgb14, 6, 3});
+    if (format == 8) out.items.push_back({ItemType::kRgbNir14, 8, 3});
+    const std::size_t extra = record_length - kSize14[format - 6];
+    if (extra > 0) out.items.push_back({ItemType::kByte14, std::uint16_t(extra), 3});
     return true;
   }
   if (format > 3 || record_length < kSize[format]) return false;
@@ -86,7 +92,7 @@ std::string compress_points(const LaszipVlr& vlr, const std::uint8_t* records, s
     const std::size_t start = out.size();
     const std::uint8_t* rec = records + first * record;
     if (vlr.compressor == kCompressorLayered) {
-      encode_point14_chunk(rec, n, out);
+      encode_layered_chunk(vlr.items, rec, n, out);
       chunk_bytes.push_back(std::uint32_t(out.size() - start));
       continue;
     }
