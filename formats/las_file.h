@@ -35,8 +35,8 @@ struct LasExtraBytes {
 };
 
 struct LasWriteOptions {
-  // LAZ (compressed, point format 0 with the LASzip version 2 items) instead of LAS point
-  // format 6. write_point_cloud_las sets it from the file's extension.
+  // LAZ (the same point format 6 records compressed by the layered coder) instead of LAS.
+  // write_point_cloud_las sets it from the file's extension.
   bool compressed = false;
   // Coordinate resolution in metres; 0 picks 0.1 mm, coarser only when the cloud's extent would
   // not fit 32-bit integers. The offset is the cloud's own (whole units), both in double.
@@ -44,8 +44,8 @@ struct LasWriteOptions {
   std::vector<LasExtraBytes> extra;
 };
 
-// A LAS 1.4 file of `cloud`: world coordinates at the chosen scale, intensity and
-// classification when the cloud has them (0 otherwise; LAZ keeps classes 0-31), every point
+// A LAS 1.4 file (point format 6) of `cloud`: world coordinates at the chosen scale, intensity
+// and classification when the cloud has them (0 otherwise), every point
 // return 1 of 1, the header's bounds and counts from the points. Deterministic: no dates.
 std::string point_cloud_to_las(const PointCloud& cloud, const LasWriteOptions& options = {});
 

@@ -79,8 +79,8 @@ std::string point_cloud_to_las(const PointCloud& cloud, const LasWriteOptions& o
     }
     extra += e.f32.empty() ? 1 : 4;
   }
-  const unsigned format = o.compressed ? 0 : 6;
-  const std::size_t record = (o.compressed ? 20 : 30) + extra;
+  constexpr unsigned format = 6;
+  const std::size_t record = 30 + extra;
   const double scale = pick_scale(cloud, o.scale);
 
   // The records, and the bounds of the coordinates as written.
@@ -96,14 +96,8 @@ std::string point_cloud_to_las(const PointCloud& cloud, const LasWriteOptions& o
     }
     const float in = cloud.intensity.empty() ? 0.f : cloud.intensity[i];
     put<std::uint16_t>(points, r + 12, std::uint16_t(std::clamp(std::lround(in), 0l, 65535l)));
-    const std::uint8_t cls = cloud.classification.empty() ? 0 : cloud.classification[i];
-    if (o.compressed) {
-      points[r + 14] = char(0x09);  // return 1 of 1
-      points[r + 15] = char(cls & 0x1f);
-    } else {
-      points[r + 14] = char(0x11);  // return 1 of 1
-      points[r + 16] = char(cls);
-    }
+    points[r + 14] = char(0x11);  // return 1 of 1
+    points[r + 16] = char(cloud.classification.empty() ? 0 : cloud.classification[i]);
     std::size_t at = r + record - extra;
     for (const auto& e : o.extra) {
       if (e.f32.empty()) {
@@ -126,7 +120,7 @@ std::string point_cloud_to_las(const PointCloud& cloud, const LasWriteOptions& o
   laz::LaszipVlr laz_vlr;
   if (o.compressed) {
     laz::v2_items(format, record, laz_vlr);
-    vlrs += vlr("laszip encoded", 22204, "ramus LAZ (LASzip 2 items)",
+    vlrs += vlr("laszip encoded", 22204, "ramus LAZ (layered, LASzip 3)",
                 laz::laszip_vlr_payload(laz_vlr));
     ++vlr_count;
   }
@@ -134,7 +128,7 @@ std::string point_cloud_to_las(const PointCloud& cloud, const LasWriteOptions& o
   constexpr std::size_t kHeader = 375;
   std::string h(kHeader, '\0');
   std::memcpy(h.data(), "LASF", 4);
-  put<std::uint16_t>(h, 6, o.compressed ? 0 : 0x10);  // formats 6-10 announce WKT CRS records
+  put<std::uint16_t>(h, 6, 0x10);  // formats 6-10 announce WKT CRS records
   h[24] = 1;
   h[25] = 4;
   std::memcpy(h.data() + 26, "ramus", 5);
@@ -144,10 +138,7 @@ std::string point_cloud_to_las(const PointCloud& cloud, const LasWriteOptions& o
   put<std::uint32_t>(h, 100, vlr_count);
   h[104] = char(format | (o.compressed ? 0x80 : 0));
   put<std::uint16_t>(h, 105, std::uint16_t(record));
-  if (format < 6 && n <= UINT32_MAX) {  // legacy counts exist only for formats 0-5
-    put<std::uint32_t>(h, 107, std::uint32_t(n));
-    put<std::uint32_t>(h, 111, std::uint32_t(n));
-  }
+  // The legacy 32-bit counts stay 0: they exist only for formats 0-5.
   for (int k = 0; k < 3; ++k) {
     put<double>(h, 131 + 8 * k, scale);
     put<double>(h, 155 + 8 * k, cloud.offset[k]);

@@ -159,7 +159,8 @@ TEST_CASE("ramus classify: LAS and LAZ outputs carry wood and leaf_score as extr
   const ramus::PointCloud a = ramus::read_point_cloud(las.string(), {}, &report);
   CHECK(report.variant == "LAS 1.4, point format 6, 35-byte records (5 extra bytes)");
   const ramus::PointCloud b = ramus::read_point_cloud(laz.string(), {}, &report);
-  CHECK(report.variant.find("LAZ 1.4, point format 0, 25-byte records (5 extra bytes)") == 0);
+  CHECK(report.variant.find("LAZ 1.4, point format 6, 35-byte records (5 extra bytes), layered") ==
+        0);
   REQUIRE(a.size() == in.size());
   REQUIRE(b.size() == in.size());
   double worst = 0;
