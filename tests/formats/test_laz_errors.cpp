@@ -140,3 +140,45 @@ TEST_CASE("laz errors: corrupt chunk bytes never crash", "[laz][errors][fuzz]") 
     }
   }
 }
+
+TEST_CASE("laz errors: a layered file (format 7, extra bytes) cut or corrupted never crashes",
+          "[laz][errors][fuzz][layered]") {
+  test::LasSpec spec;
+  spec.minor = 4;
+  spec.format = 7;
+  spec.extra_bytes = 2;
+  std::vector<test::LasPoint> pts;
+  Rng rng(8);
+  for (int i = 0; i < 180; ++i) {
+    const auto u = rng.next_u64();
+    pts.push_back({i * 51 + std::int32_t(u % 40), std::int32_t(u >> 9) % 800, i % 61,
+                   std::uint16_t(u % 500), std::uint8_t(40 + i % 3)});
+  }
+  std::string las = test::make_las(spec, pts);
+  for (int i = 0; i < 180; ++i) {  // colours, times, a second scanner channel now and then
+    char* r = las.data() + 375 + 38 * i;
+    const double t = 5e5 + i * 1e-4;
+    std::memcpy(r + 22, &t, 8);
+    r[15] = char(i % 17 == 0 ? 0x10 : 0);
+    const std::uint16_t rgb[3] = {std::uint16_t(i * 300), std::uint16_t(i * 301), 7};
+    std::memcpy(r + 30, rgb, 6);
+  }
+  const std::string laz = compress_las(las, "small.las", 64);
+  REQUIRE(decompress_laz(laz, "ok.laz") == las);
+  for (std::size_t n = 0; n < laz.size(); ++n) {
+    const std::string e = error_of(laz.substr(0, n));
+    INFO("cut at " << n << ": " << e);
+    REQUIRE(!e.empty());
+  }
+  const std::size_t start = point_offset(laz) + 8;
+  for (std::size_t i = start; i < laz.size(); ++i) {
+    std::string s = laz;
+    s[i] = char(s[i] ^ (1 + rng.next_u64() % 255));
+    try {
+      const PointCloud c = read_point_cloud_bytes(s, Format::kLas, "bad.laz");
+      CHECK(c.size() == 180);
+    } catch (const FormatError& e) {
+      CHECK(std::string(e.what()).find("bad.laz: byte ") == 0);
+    }
+  }
+}
