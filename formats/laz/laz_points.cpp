@@ -21,6 +21,8 @@ using formats_detail::fail_at_byte;
 
 namespace {
 
+constexpr std::uint64_t kMaxPointsPerByte = 1024;
+
 struct Chunk {
   std::uint64_t points = 0;
   std::uint64_t start = 0, bytes = 0;
@@ -95,6 +97,12 @@ std::vector<Chunk> read_chunk_table(const LazInput& in, const LaszipVlr& vlr) {
                  "the chunk table lists " + std::to_string(n) + " chunks for " +
                      std::to_string(in.count) + " points");
   }
+  // Every chunk starts with a raw record, so the table cannot list more chunks than fit.
+  if (std::uint64_t(n) > (t - data_start) / in.record_length + 1) {
+    fail_at_byte(in.name, t + 4,
+                 "the chunk table lists " + std::to_string(n) + " chunks but only " +
+                     std::to_string(t - data_start) + " bytes of compressed points precede it");
+  }
   std::vector<Chunk> chunks(n);
   RangeDecoder dec;
   IntegerDecoder ic(32, 2);
@@ -128,6 +136,17 @@ std::vector<Chunk> read_chunk_table(const LazInput& in, const LaszipVlr& vlr) {
                    "the chunk table gives chunk " + std::to_string(i + 1) + " " +
                        std::to_string(chunks[i].points) + " points, more than the " +
                        std::to_string(in.count - points) + " the header has left");
+    }
+    // A corrupt count would make us decode garbage for as long as the stream does not run dry
+    // (a zero-filled chunk hardly ever does): no real chunk compresses better than a few
+    // hundred points per byte even when every point is the same.
+    if (chunks[i].points > kMaxPointsPerByte * (chunks[i].bytes + 1)) {
+      fail_at_byte(in.name, chunks[i].start,
+                   "chunk " + std::to_string(i + 1) + " of " + std::to_string(n) + " would hold " +
+                       std::to_string(chunks[i].points) + " points in " +
+                       std::to_string(chunks[i].bytes) + " bytes (more than " +
+                       std::to_string(kMaxPointsPerByte) +
+                       " per byte): the point count or the chunk table is corrupt");
     }
     points += chunks[i].points;
   }

@@ -98,6 +98,18 @@ TEST_CASE("laz errors: point counts that disagree with the chunk table", "[laz][
   CHECK(error_of(s).find("ends after") != std::string::npos);
 }
 
+TEST_CASE("laz errors: a count no chunk could hold is refused before decoding", "[laz][errors]") {
+  std::string s = small_laz();
+  const std::size_t payload = s.find("laszip encoded") - 2 + 54;
+  test::poke<std::uint32_t>(s, payload + 12, 4000000);  // chunks of 4 million points
+  test::poke<std::uint32_t>(s, 107, 10000000);          // three chunks' worth
+  const std::string e = error_of(s);
+  INFO(e);
+  CHECK(e.find("bad.laz: byte " + std::to_string(point_offset(s) + 8) +
+               ": chunk 1 of 3 would hold 4000000 points in ") == 0);
+  CHECK(e.find("the point count or the chunk table is corrupt") != std::string::npos);
+}
+
 TEST_CASE("laz errors: broken laszip VLRs", "[laz][errors]") {
   const std::string laz = small_laz();
   const std::size_t payload = laz.find("laszip encoded") - 2 + 54;
