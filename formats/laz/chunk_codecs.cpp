@@ -51,10 +51,8 @@ class PointwiseChunks final : public ChunkCodec {
 
 }  // namespace
 
-std::unique_ptr<ChunkCodec> make_chunk_codec(const LaszipVlr& vlr, unsigned point_format,
-                                             std::string& why) {
+std::unique_ptr<ChunkCodec> make_chunk_codec(const LaszipVlr& vlr, std::string& why) {
   if (vlr.compressor == kCompressorLayered) return make_layered_decoder(vlr, why);
-  (void)point_format;
   std::vector<std::unique_ptr<ItemDecoder>> items;
   std::vector<std::size_t> sizes;
   for (const auto& item : vlr.items) {

@@ -1,6 +1,6 @@
 // How one chunk's bytes become records: the pointwise chunks of compressor 2 (first record raw,
 // then one range-coded stream for all items of all points) and the layered chunks of compressor
-// 3 (first record raw, then separately coded layers per field group, LAS 1.4 formats 6-10).
+// 3 (first record raw, then separately coded layers per field group, LAS 1.4 formats 6-8).
 #pragma once
 
 #include <cstddef>
@@ -23,7 +23,6 @@ class ChunkCodec {
 
 // The codec for the VLR's compressor and items; nullptr with `why` set when this reader cannot
 // decode them.
-std::unique_ptr<ChunkCodec> make_chunk_codec(const LaszipVlr& vlr, unsigned point_format,
-                                             std::string& why);
+std::unique_ptr<ChunkCodec> make_chunk_codec(const LaszipVlr& vlr, std::string& why);
 
 }  // namespace ramus::laz

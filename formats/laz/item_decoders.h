@@ -1,8 +1,8 @@
 // Decoders of the items a compressed LAS point record is made of. Each chunk starts with the
 // first point stored raw (`init`), the following points are decoded against the state the
-// previous ones left (`decode`). Version 2 items (LASzip 2.x, point formats 0-5): point10,
-// gpstime11, rgb12, extra bytes. The layered version 3 items of formats 6-10 are in
-// layered_decoders.h.
+// previous ones left (`decode`). Version 2 items (LASzip 2.x, point formats 0-3): point10,
+// gpstime11, rgb12, extra bytes. The layered version 3 items of formats 6-8 are in
+// layered_decoder.h and layered_items.h.
 #pragma once
 
 #include <cstdint>

@@ -172,7 +172,7 @@ std::string describe_laz(const LazInput& in) {
 void decode_laz_points(const LazInput& in, const RecordSink& sink) {
   const LaszipVlr vlr = parse_vlr(in);
   std::string why;
-  std::unique_ptr<ChunkCodec> codec = make_chunk_codec(vlr, in.format, why);
+  std::unique_ptr<ChunkCodec> codec = make_chunk_codec(vlr, why);
   if (!codec) fail_at_byte(in.name, in.vlr_payload, why + " (items: " + item_list(vlr) + ")");
   const std::vector<Chunk> chunks = read_chunk_table(in, vlr);
   // Records go to the sink in batches, so memory stays bounded whatever a chunk claims.
