@@ -4,6 +4,7 @@
 #include <limits>
 #include <vector>
 
+#include "formats/laz/gps_time_encoder.h"
 #include "formats/laz/integer_encoder.h"
 #include "formats/laz/rgb_coding.h"
 #include "formats/laz/v2_tables.h"
@@ -101,61 +102,22 @@ class Point10Encoder final : public ItemEncoder {
   IntegerEncoder dx_{32, 2}, dy_{32, 22}, z_{32, 20};
 };
 
-// GPS time with a subset of the codes the decoder knows: a difference to the previous time of
-// the current sequence (as a correction of its last difference), "unchanged", or a full time.
-// Multiples of the last difference and interleaved sequences are not searched for: valid LAZ,
-// somewhat larger than LASzip's own for multi-return data.
+// GPS time (the double's bits), the codes of GpsTime11Decoder (gps_time_encoder.h).
 class GpsTime11Encoder final : public ItemEncoder {
  public:
-  static constexpr std::uint32_t kUnchanged = 511, kCodeFull = 512, kTotal = 516;
-
   void init(const std::uint8_t* raw) override {
     multi_.reset();
     zero_diff_.reset();
     ic_.reset();
-    time_ = get_le<std::uint64_t>(raw);
-    diff_ = 0;
+    seq_.reset(get_le<std::uint64_t>(raw));
   }
-
   void encode(RangeEncoder& enc, const std::uint8_t* item) override {
-    const std::uint64_t t = get_le<std::uint64_t>(item);
-    const std::int64_t d = std::int64_t(t - time_);
-    const bool small = d >= std::numeric_limits<std::int32_t>::min() &&
-                       d <= std::numeric_limits<std::int32_t>::max();
-    if (diff_ == 0) {
-      if (d == 0) {
-        enc.encode_symbol(zero_diff_, 0);
-      } else if (small) {
-        enc.encode_symbol(zero_diff_, 1);
-        ic_.encode(enc, 0, std::int32_t(d), 0);
-        diff_ = std::int32_t(d);
-      } else {
-        enc.encode_symbol(zero_diff_, 2);
-        full(enc, t);
-      }
-    } else if (d == 0) {
-      enc.encode_symbol(multi_, kUnchanged);
-    } else if (small) {
-      enc.encode_symbol(multi_, 1);
-      ic_.encode(enc, diff_, std::int32_t(d), 1);
-    } else {
-      enc.encode_symbol(multi_, kCodeFull);
-      full(enc, t);
-    }
-    time_ = t;
+    encode_gps_time(enc, multi_, zero_diff_, ic_, seq_, get_le<std::uint64_t>(item), false);
   }
 
  private:
-  // The decoder starts a new sequence from a full time; we keep using that one.
-  void full(RangeEncoder& enc, std::uint64_t t) {
-    ic_.encode(enc, std::int32_t(time_ >> 32), std::int32_t(t >> 32), 8);
-    enc.write_int(std::uint32_t(t));
-    diff_ = 0;
-  }
-
-  std::uint64_t time_ = 0;
-  std::int32_t diff_ = 0;
-  SymbolModel multi_{kTotal};
+  GpsSequences seq_;
+  SymbolModel multi_{516};
   SymbolModel zero_diff_{6};
   IntegerEncoder ic_{32, 9};
 };

@@ -161,7 +161,7 @@ class Point14Layers final : public ChunkCodec {
     }
     if (present_[kGps] && gps_changed) {
       decode_gps(*c, dec_[kGps]);
-      p.gps = c->gps_time[c->gps_last];
+      p.gps = c->seq.time[c->seq.last];
     }
     p.gps_changed = false;
     p.pack(out);
@@ -176,13 +176,13 @@ class Point14Layers final : public ChunkCodec {
   // returns layer says whether the time changed) and with a 5-symbol zero-difference model.
   static void decode_gps(Context& c, RangeDecoder& d) {
     for (;;) {
-      std::uint32_t& last = c.gps_last;
-      if (c.gps_diff[last] == 0) {
+      std::uint32_t& last = c.seq.last;
+      if (c.seq.diff[last] == 0) {
         const std::uint32_t multi = d.decode_symbol(c.gps_zero_diff);
         if (multi == 0) {
-          c.gps_diff[last] = c.gps.decode(d, 0, 0);
-          c.gps_time[last] += std::uint64_t(std::int64_t(c.gps_diff[last]));
-          c.gps_extreme[last] = 0;
+          c.seq.diff[last] = c.gps.decode(d, 0, 0);
+          c.seq.time[last] += std::uint64_t(std::int64_t(c.seq.diff[last]));
+          c.seq.extreme[last] = 0;
         } else if (multi == 1) {
           full_time(c, d);
         } else {
@@ -193,37 +193,37 @@ class Point14Layers final : public ChunkCodec {
       }
       const std::int32_t multi = std::int32_t(d.decode_symbol(c.gps_multi));
       if (multi == 1) {
-        c.gps_time[last] += std::uint64_t(std::int64_t(c.gps.decode(d, c.gps_diff[last], 1)));
-        c.gps_extreme[last] = 0;
+        c.seq.time[last] += std::uint64_t(std::int64_t(c.gps.decode(d, c.seq.diff[last], 1)));
+        c.seq.extreme[last] = 0;
       } else if (multi < kGps14CodeFull) {
         std::int32_t diff;
         auto times = [](std::int32_t a, std::int32_t b) {
           return std::int32_t(std::uint32_t(a) * std::uint32_t(b));
         };
         auto extreme = [&](std::int32_t v) {
-          if (++c.gps_extreme[last] > 3) {
-            c.gps_diff[last] = v;
-            c.gps_extreme[last] = 0;
+          if (++c.seq.extreme[last] > 3) {
+            c.seq.diff[last] = v;
+            c.seq.extreme[last] = 0;
           }
         };
         if (multi == 0) {
           diff = c.gps.decode(d, 0, 7);
           extreme(diff);
         } else if (multi < kGps14Multi) {
-          diff = c.gps.decode(d, times(multi, c.gps_diff[last]), multi < 10 ? 2 : 3);
+          diff = c.gps.decode(d, times(multi, c.seq.diff[last]), multi < 10 ? 2 : 3);
         } else if (multi == kGps14Multi) {
-          diff = c.gps.decode(d, times(kGps14Multi, c.gps_diff[last]), 4);
+          diff = c.gps.decode(d, times(kGps14Multi, c.seq.diff[last]), 4);
           extreme(diff);
         } else {
           const std::int32_t minus = kGps14Multi - multi;
           if (minus > kGps14MultiMinus) {
-            diff = c.gps.decode(d, times(minus, c.gps_diff[last]), 5);
+            diff = c.gps.decode(d, times(minus, c.seq.diff[last]), 5);
           } else {
-            diff = c.gps.decode(d, times(kGps14MultiMinus, c.gps_diff[last]), 6);
+            diff = c.gps.decode(d, times(kGps14MultiMinus, c.seq.diff[last]), 6);
             extreme(diff);
           }
         }
-        c.gps_time[last] += std::uint64_t(std::int64_t(diff));
+        c.seq.time[last] += std::uint64_t(std::int64_t(diff));
       } else if (multi == kGps14CodeFull) {
         full_time(c, d);
       } else {
@@ -235,13 +235,13 @@ class Point14Layers final : public ChunkCodec {
   }
 
   static void full_time(Context& c, RangeDecoder& d) {
-    c.gps_next = (c.gps_next + 1) & 3;
+    c.seq.next = (c.seq.next + 1) & 3;
     const std::uint32_t high =
-        std::uint32_t(c.gps.decode(d, std::int32_t(c.gps_time[c.gps_last] >> 32), 8));
-    c.gps_time[c.gps_next] = (std::uint64_t(high) << 32) | d.read_int();
-    c.gps_last = c.gps_next;
-    c.gps_diff[c.gps_last] = 0;
-    c.gps_extreme[c.gps_last] = 0;
+        std::uint32_t(c.gps.decode(d, std::int32_t(c.seq.time[c.seq.last] >> 32), 8));
+    c.seq.time[c.seq.next] = (std::uint64_t(high) << 32) | d.read_int();
+    c.seq.last = c.seq.next;
+    c.seq.diff[c.seq.last] = 0;
+    c.seq.extreme[c.seq.last] = 0;
   }
 
   std::vector<std::unique_ptr<LayerItemDecoder>> items_;  // after point14

@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 
+#include "formats/laz/gps_time_encoder.h"
 #include "formats/laz/integer_encoder.h"
 #include "formats/laz/layered_items.h"
 #include "formats/laz/point14_context.h"
@@ -128,38 +129,8 @@ class Point14Encoder {
   }
 
  private:
-  // A subset of the decoder's codes: a 32-bit difference as a correction of the sequence's
-  // last difference, or a full time. Valid for every decoder; LASzip's own search for
-  // multiples and interleaved sequences would compress multi-return times further.
   static void encode_gps(Context& c, RangeEncoder& e, std::uint64_t t) {
-    const std::uint32_t last = c.gps_last;
-    const std::int64_t d = std::int64_t(t - c.gps_time[last]);
-    const bool small = d >= std::numeric_limits<std::int32_t>::min() &&
-                       d <= std::numeric_limits<std::int32_t>::max();
-    if (c.gps_diff[last] == 0) {
-      if (small) {
-        e.encode_symbol(c.gps_zero_diff, 0);
-        c.gps.encode(e, 0, std::int32_t(d), 0);
-        c.gps_diff[last] = std::int32_t(d);
-        c.gps_time[last] = t;
-        return;
-      }
-      e.encode_symbol(c.gps_zero_diff, 1);
-    } else {
-      if (small) {
-        e.encode_symbol(c.gps_multi, 1);
-        c.gps.encode(e, c.gps_diff[last], std::int32_t(d), 1);
-        c.gps_time[last] = t;
-        return;
-      }
-      e.encode_symbol(c.gps_multi, kGps14CodeFull);
-    }
-    c.gps_next = (c.gps_next + 1) & 3;
-    c.gps.encode(e, std::int32_t(c.gps_time[last] >> 32), std::int32_t(t >> 32), 8);
-    e.write_int(std::uint32_t(t));
-    c.gps_last = c.gps_next;
-    c.gps_time[c.gps_last] = t;
-    c.gps_diff[c.gps_last] = 0;
+    encode_gps_time(e, c.gps_multi, c.gps_zero_diff, c.gps, c.seq, t, true);
   }
 
   std::array<std::vector<std::uint8_t>, kLayers14> bytes_;

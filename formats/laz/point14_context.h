@@ -10,6 +10,7 @@
 #include <memory>
 
 #include "formats/laz/adaptive_models.h"
+#include "formats/laz/gps_sequences.h"
 #include "formats/laz/v2_tables.h"
 
 namespace ramus::laz {
@@ -74,9 +75,7 @@ struct Point14Context {
   IntCoder source{16};
   SymbolModel gps_multi{kGps14Total}, gps_zero_diff{5};
   IntCoder gps{32, 9};
-  std::uint32_t gps_last = 0, gps_next = 0;
-  std::uint64_t gps_time[4] = {};
-  std::int32_t gps_diff[4] = {}, gps_extreme[4] = {};
+  GpsSequences seq;
 
   // Makes the context current for a chunk or a new scanner channel, starting from `from`.
   void start(const Point14& from) {
@@ -108,13 +107,7 @@ struct Point14Context {
     gps_multi.reset();
     gps_zero_diff.reset();
     gps.reset();
-    gps_last = gps_next = 0;
-    for (int i = 0; i < 4; ++i) {
-      gps_time[i] = 0;
-      gps_diff[i] = 0;
-      gps_extreme[i] = 0;
-    }
-    gps_time[0] = from.gps;
+    seq.reset(from.gps);
     last = from;
     last.gps_changed = false;
     unused = false;

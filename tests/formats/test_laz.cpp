@@ -118,7 +118,7 @@ std::string synthetic_las(int format, std::size_t n, std::size_t extra, std::uin
   std::string s = test::make_las(spec, pts);
   const std::size_t record = test::las_record_size(format) + extra;
   const std::size_t base = 227;
-  double t = 4.5e5;
+  double t = 4.5e5, t2 = 9.1e5;
   for (std::size_t i = 0; i < n; ++i) {
     char* r = s.data() + base + i * record;
     const auto u = rng.next_u64();
@@ -133,15 +133,16 @@ std::string synthetic_las(int format, std::size_t n, std::size_t extra, std::uin
       const auto v = (u >> 24) % 16;
       if (v < 8)
         t += 1e-5;  // steady pulses
-      else if (v < 12)
+      else if (v < 11)
         t += 0;  // same pulse
-      else if (v < 14)
+      else if (v < 13)
         t += 3e-5;  // a skipped pulse
       else if (v == 14)
         t += 1e4;  // a jump needing the full time
-      else
+      else if (v == 15)
         t -= 2.0;  // backwards
-      std::memcpy(r + at, &t, 8);
+      t2 += 2e-5;  // a second scanner, interleaved now and then (v == 13)
+      std::memcpy(r + at, v == 13 ? &t2 : &t, 8);
       at += 8;
     }
     if (format >= 2) {
@@ -182,7 +183,7 @@ std::string synthetic_las14(std::size_t n, std::uint64_t seed, bool busy, int fo
          std::uint8_t(busy ? (u >> 40) % 70 : 2)};
   }
   std::string s = test::make_las(spec, pts);
-  double t = 2.1e8;
+  double t = 2.1e8, t2 = 2.2e8;
   for (std::size_t i = 0; i < n && busy; ++i) {
     char* r = s.data() + 375 + record * i;
     const auto u = rng.next_u64();
@@ -200,15 +201,16 @@ std::string synthetic_las14(std::size_t n, std::uint64_t seed, bool busy, int fo
     const auto v = (u >> 40) % 16;
     if (v < 8)
       t += 2.5e-6;
-    else if (v < 12)
+    else if (v < 11)
       t += 0;
-    else if (v < 14)
+    else if (v < 13)
       t += 7.5e-6;
     else if (v == 14)
       t += 5e4;
-    else
+    else if (v == 15)
       t -= 1.0;
-    std::memcpy(r + 22, &t, 8);
+    t2 += 5e-6;  // a second scanner, interleaved now and then (v == 13)
+    std::memcpy(r + 22, v == 13 ? &t2 : &t, 8);
     if (format >= 7) {  // colours (and near infrared) that repeat, go grey, or change
       const auto w = rng.next_u64();
       std::uint16_t c[4];
