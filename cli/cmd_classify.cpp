@@ -1,7 +1,8 @@
-// ramus classify SCAN -o OUT.ply [--wood WOOD.ply|.xyz] [--ascii] [--scale R]
+// ramus classify SCAN -o OUT.ply|.las|.laz [--wood WOOD.ply|.xyz|.las|.laz] [--ascii] [--scale R]
 // Separates the foliage of a laser scan from its wood (docs/wood-separation.md) and writes every
 // point with a `wood` property (1 wood, 0 leaf) and its `leaf_score`, so the split can be
-// inspected in any point-cloud viewer; optionally the wood points alone, ready for
+// inspected in any point-cloud viewer (in LAS/LAZ as named extra bytes, beside the scan's own
+// intensity and classification); optionally the wood points alone, ready for
 // `ramus reconstruct --leaves-in-scan keep`.
 #include <cstdio>
 #include <cstring>
@@ -14,6 +15,7 @@
 #include "core/atomic_file.h"
 #include "core/little_endian.h"
 #include "core/number_text.h"
+#include "formats/las_file.h"
 #include "formats/point_cloud_io.h"
 #include "reconstruct/wood/wood_separation.h"
 
@@ -53,7 +55,24 @@ std::string classified_ply(const PointCloud& c, const WoodSeparation& ws, bool b
   return out;
 }
 
+bool is_las(const std::string& path) {
+  const std::string e = std::filesystem::path(path).extension().string();
+  return e == ".las" || e == ".laz";
+}
+
+// LAS 1.4 (or LAZ) with the scan's channels and `wood`, `leaf_score` as extra bytes.
+void write_classified_las(const std::string& path, const PointCloud& c, const WoodSeparation& ws) {
+  LasWriteOptions o;
+  o.extra.push_back({"wood", "1 wood, 0 leaf", ws.wood, {}});
+  o.extra.push_back({"leaf_score", "leaf likelihood (ramus classify)", {}, ws.leaf_score});
+  write_point_cloud_las(path, c, o);
+}
+
 int run_classify(const ClassifyArgs& a, const GlobalOptions& global) {
+  auto is_ply = [](const std::string& p) { return std::filesystem::path(p).extension() == ".ply"; };
+  if (a.ascii && !is_ply(a.output) && !is_ply(a.wood)) {
+    throw UserError("--ascii applies to PLY outputs only, not to " + a.output);
+  }
   PointCloud cloud;
   try {
     cloud = read_point_cloud(a.scan);
@@ -69,10 +88,16 @@ int run_classify(const ClassifyArgs& a, const GlobalOptions& global) {
     throw UserError(a.scan + ": " + e.what());
   }
   try {
-    write_file_atomically(a.output, classified_ply(cloud, ws, !a.ascii));
+    if (is_las(a.output)) {
+      write_classified_las(a.output, cloud, ws);
+    } else {
+      write_file_atomically(a.output, classified_ply(cloud, ws, !a.ascii));
+    }
     if (!a.wood.empty()) {
       const PointCloud wood = select_points(cloud, ws.wood);
-      if (std::filesystem::path(a.wood).extension() == ".xyz") {
+      if (is_las(a.wood)) {
+        write_point_cloud_las(a.wood, wood);
+      } else if (std::filesystem::path(a.wood).extension() == ".xyz") {
         write_point_cloud_xyz(a.wood, wood);
       } else {
         write_point_cloud_ply(a.wood, wood, !a.ascii);
@@ -110,17 +135,19 @@ void add_classify(CLI::App& app, const GlobalOptions& global, std::function<int(
   auto args = std::make_shared<ClassifyArgs>();
   CLI::App* sub = app.add_subcommand(
       "classify", "wood/leaf separation of a scan (points with a wood property)");
-  sub->add_option("scan", args->scan, "point cloud: .ply, .xyz/.txt/.asc/.csv, .las, .pcd")
+  sub->add_option("scan", args->scan, "point cloud: .ply, .xyz/.txt/.asc/.csv, .las, .laz, .pcd")
       ->required();
-  output_path(
-      sub->add_option("-o,--output", args->output,
-                      "output .ply: every point with `wood` (1 wood, 0 leaf) and `leaf_score`"))
+  output_path(sub->add_option("-o,--output", args->output,
+                              "output .ply, .las or .laz: every point with `wood` (1 wood, 0 "
+                              "leaf) and `leaf_score` (LAS 1.4 extra bytes in .las/.laz)"))
       ->required()
-      ->check(extension_check({".ply"}, "the output must end in .ply"));
-  output_path(
-      sub->add_option("--wood", args->wood, "also write the wood points alone (.ply or .xyz)"))
-      ->check(extension_check({".ply", ".xyz"}, "the wood output must end in .ply or .xyz"));
-  sub->add_flag("--ascii", args->ascii, "write ascii PLY instead of binary");
+      ->check(
+          extension_check({".ply", ".las", ".laz"}, "the output must end in .ply, .las or .laz"));
+  output_path(sub->add_option("--wood", args->wood,
+                              "also write the wood points alone (.ply, .xyz, .las or .laz)"))
+      ->check(extension_check({".ply", ".xyz", ".las", ".laz"},
+                              "the wood output must end in .ply, .xyz, .las or .laz"));
+  sub->add_flag("--ascii", args->ascii, "write ascii PLY instead of binary (PLY outputs only)");
   sub->add_option("--scale", args->scale,
                   "neighbourhood radius r of the features (default: the larger of 1% of the "
                   "height and 6 point spacings)")

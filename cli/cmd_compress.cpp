@@ -65,7 +65,8 @@ void add_compress(CLI::App& app, const GlobalOptions& global, std::function<int(
   auto args = std::make_shared<CompressArgs>();
   CLI::App* sub = app.add_subcommand(
       "compress", "wavelet compression figures of a scan (Friedman & Stamos 2013, Table I)");
-  sub->add_option("SCAN", args->scan, "point cloud (.ply .xyz .txt .asc .las .pcd)")->required();
+  sub->add_option("SCAN", args->scan, "point cloud (.ply .xyz .txt .asc .las .laz .pcd)")
+      ->required();
   sub->add_option("--grid", args->grid, "voxel grid side, a power of two (default 64)");
   sub->add_option("--gamma", args->gamma, "lossy threshold on |coefficient| (default 0.2)")
       ->check(CLI::NonNegativeNumber);

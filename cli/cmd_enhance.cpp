@@ -210,7 +210,8 @@ void add_enhance(CLI::App& app, const GlobalOptions& global, std::function<int()
   CLI::App* sub = app.add_subcommand(
       "enhance",
       "super-resolution of a scan with its own voxel grammar, or (--levels) its L-rules iterated");
-  sub->add_option("SCAN", args->scan, "point cloud (.ply .xyz .txt .asc .las .pcd)")->required();
+  sub->add_option("SCAN", args->scan, "point cloud (.ply .xyz .txt .asc .las .laz .pcd)")
+      ->required();
   output_path(sub->add_option("-o,--output", args->output, "output points, .ply or .xyz"))
       ->required();
   sub->add_option("--grid", args->grid,

@@ -13,8 +13,8 @@ void add_infer(CLI::App& app, const GlobalOptions& global, std::function<int()>&
   auto args = std::make_shared<InferCommonArgs>();
   CLI::App* sub = app.add_subcommand("infer", "infer a grammar from a scan");
   sub->add_option("INPUT", args->input,
-                  "point cloud (.ply .xyz .txt .asc .las .pcd); --method skeleton also takes a "
-                  "skeleton .json or a .ramus grammar")
+                  "point cloud (.ply .xyz .txt .asc .las .laz .pcd); --method skeleton also "
+                  "takes a skeleton .json or a .ramus grammar")
       ->required();
   output_path(sub->add_option("-o,--output", args->output, "the grammar to write (.ramus)"))
       ->required();

@@ -41,7 +41,7 @@ int print_build() {
   std::printf("compiler      GCC %d.%d.%d, C++%ld\n", __GNUC__, __GNUC_MINOR__, __GNUC_PATCHLEVEL__,
               __cplusplus / 100 % 100 + 0L);
   std::printf("grammars      .ramus (lsystem, pieces and voxels blocks; docs/language.md)\n");
-  std::printf("scans in      .ply .xyz .txt .asc .csv .las (1.0-1.4, formats 0-10) .pcd\n");
+  std::printf("scans in      .ply .xyz .txt .asc .csv .las (1.0-1.4, formats 0-10) .laz .pcd\n");
   std::printf(
       "meshes out    .glb .gltf (y up, MSFT_lod) .obj .ply (--up y|z); previews .png .svg\n");
   std::printf("meshes in     .glb .gltf .obj .ply (ramus preview)\n");

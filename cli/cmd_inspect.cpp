@@ -89,7 +89,7 @@ int run_inspect(const InspectArgs& args) {
 void add_inspect(CLI::App& app, const GlobalOptions&, std::function<int()>& run) {
   auto args = std::make_shared<InspectArgs>();
   CLI::App* sub = app.add_subcommand(
-      "inspect", "read a scan (.ply .xyz .txt .asc .csv .las .pcd) and print what it holds");
+      "inspect", "read a scan (.ply .xyz .txt .asc .csv .las .laz .pcd) and print what it holds");
   sub->add_option("SCAN", args->scan, "the point-cloud file")->required();
   sub->add_flag("--timing", args->timing, "also print how long reading took");
   sub->callback([args, &run] { run = [args] { return run_inspect(*args); }; });

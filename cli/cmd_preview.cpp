@@ -3,8 +3,7 @@
 // A picture from the front and from the side (docs/mesh.md, "Preview") of what FILE holds: a
 // grammar (.ramus, or an .rmb decoded as the runtime decodes it) grown into its tree, a skeleton
 // (.json) meshed as `ramus build` meshes it, a mesh (.glb .gltf .obj .ply) as the file has it, or a
-// scan
-// (.ply .xyz .txt .asc .csv .las .pcd) as points. Options that cannot apply to FILE's kind are
+// scan (.ply .xyz .txt .asc .csv .las .laz .pcd) as points. Options that cannot apply to FILE's kind are
 // errors rather than silently ignored, so a user who asks for a seed learns it changed nothing.
 #include <cstdio>
 #include <filesystem>
@@ -125,7 +124,7 @@ void add_preview(CLI::App& app, const GlobalOptions& global, std::function<int()
   add_grow_options(sub, args->grow);
   sub->get_option("file")->description(
       "what to draw: a grammar (.ramus .rmb), a skeleton (.json), a mesh (.glb .gltf .obj .ply) "
-      "or a scan (.ply .xyz .txt .asc .csv .las .pcd); a .ply with faces is a mesh");
+      "or a scan (.ply .xyz .txt .asc .csv .las .laz .pcd); a .ply with faces is a mesh");
   output_path(sub->add_option("-o,--output", args->output, "output picture: .png or .svg"))
       ->required()
       ->check(CLI::Validator(

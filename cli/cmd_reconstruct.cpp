@@ -215,7 +215,7 @@ void add_reconstruct(CLI::App& app, const GlobalOptions& global, std::function<i
   CLI::App* sub =
       app.add_subcommand("reconstruct", "scan -> tree skeletons -> mesh (Livny et al.)");
   sub->add_option("scan", args->scan,
-                  "point cloud: .ply, .xyz/.txt/.asc/.csv, .las, .pcd; or a tile manifest "
+                  "point cloud: .ply, .xyz/.txt/.asc/.csv, .las, .laz, .pcd; or a tile manifest "
                   "(DIR/manifest.json of `ramus tile`) with --tile")
       ->required();
   output_path(sub->add_option("-o,--output", args->output,

@@ -18,7 +18,7 @@
 #include "core/rng.h"
 #include "core/skeleton_trees.h"
 #include "formats/forest_layout.h"
-#include "formats/las_writer.h"
+#include "formats/las_file.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
 

@@ -84,7 +84,8 @@ void add_symmetrize(CLI::App& app, const GlobalOptions& global, std::function<in
   CLI::App* sub = app.add_subcommand(
       "symmetrize",
       "merge a scan with its reflection about the scanner plane through the root (preprocessing)");
-  sub->add_option("SCAN", args->scan, "point cloud (.ply .xyz .txt .asc .las .pcd)")->required();
+  sub->add_option("SCAN", args->scan, "point cloud (.ply .xyz .txt .asc .las .laz .pcd)")
+      ->required();
   output_path(sub->add_option("-o,--output", args->output, "output points, .ply or .xyz"))
       ->required();
   sub->add_option("--scanner", args->scanner, "scanner position x,y,z (default: from the file)");

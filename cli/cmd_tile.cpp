@@ -13,7 +13,7 @@
 
 #include "cli/command.h"
 #include "cli/output_path.h"
-#include "formats/las_writer.h"
+#include "formats/las_file.h"
 #include "formats/point_cloud_io.h"
 #include "formats/tile_manifest.h"
 #include "formats/voxel_thin.h"

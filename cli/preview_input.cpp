@@ -84,7 +84,7 @@ PreviewInput classify_preview_input(const std::string& path) {
   throw UserError(path +
                   ": cannot tell what this is; preview reads grammars (.ramus, .rmb), skeletons "
                   "(.json), meshes (.glb .gltf .obj .ply) and scans (.ply .xyz .txt .asc .csv "
-                  ".las .pcd)");
+                  ".las .laz .pcd)");
 }
 
 }  // namespace ramus::cli

@@ -1,4 +1,4 @@
-// Reading and writing point clouds (laser scans): PLY, XYZ/TXT/ASC/CSV, LAS 1.0-1.4 and PCD.
+// Reading and writing point clouds (laser scans): PLY, XYZ/TXT/ASC/CSV, LAS 1.0-1.4, LAZ and PCD.
 //
 // Every reader produces a ramus::PointCloud whose positions are single precision relative to a
 // double-precision `offset` chosen at the centre of the cloud's bounding box (computed from the
@@ -72,7 +72,7 @@ struct ReadReport {
 
 // Reads the file at `path`. The format comes from the content's magic bytes when they announce
 // one, else from the extension, else plain text is read as XYZ. An empty file or one without
-// points is a FormatError; so is a LAZ (compressed LAS) file, which is not read yet.
+// points is a FormatError. LAZ (compressed LAS) is decompressed chunk by chunk (formats/laz/).
 PointCloud read_point_cloud(const std::string& path, const ReadOptions& options = {},
                             ReadReport* report = nullptr);
 

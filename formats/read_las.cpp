@@ -4,11 +4,15 @@
 // 64-bit point counts (375). Coordinates are X * scale + offset in double precision. The header's
 // bounding box is never used (writers leave it zeroed or stale): bounds come from the points.
 // Records may be longer than their format's minimum (extra bytes), which are skipped.
-// LAZ (point format byte with bit 7 or 6 set, or a "laszip encoded" VLR) is rejected clearly.
+// LAZ (point format byte with bit 7 or 6 set, and a "laszip encoded" VLR) is decompressed chunk
+// by chunk by formats/laz/ and its records go through the same conversion.
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 #include "formats/detail/reader_util.h"
+#include "formats/laz/laz_points.h"
 
 namespace ramus::formats_detail {
 namespace {
@@ -41,14 +45,10 @@ struct LasHeader {
   std::uint64_t count = 0;
   double scale[3] = {1, 1, 1};
   double offset[3] = {0, 0, 0};
+  bool compressed_bits = false;  // the point format byte's bit 7 or 6 (LAZ)
+  std::size_t laszip_vlr = 0;    // payload offset of the "laszip encoded" VLR (0: none)
+  std::size_t laszip_vlr_length = 0;
 };
-
-[[noreturn]] void laz_error(const std::string& file, std::size_t byte, const std::string& why) {
-  fail_at_byte(file, byte,
-               "the file is LAZ-compressed (" + why +
-                   "); compressed LAS is not read yet: decompress it first, e.g. with "
-                   "'laszip -i in.laz -o out.las' or 'pdal translate in.laz out.las'");
-}
 
 std::size_t min_header_size(unsigned minor) { return minor >= 4 ? 375 : minor == 3 ? 235 : 227; }
 
@@ -86,12 +86,8 @@ void parse_fixed_fields(std::string_view b, const std::string& file, LasHeader& 
 void parse_point_fields(std::string_view b, const std::string& file, LasHeader& h) {
   const char* d = b.data();
   const unsigned format_byte = std::uint8_t(d[kFormat]);
-  if (format_byte & 0xc0) {
-    char hex[8];
-    std::snprintf(hex, sizeof hex, "0x%02x", format_byte);
-    laz_error(file, kFormat, std::string("point format byte ") + hex + ": compression bit set");
-  }
-  h.format = format_byte;
+  h.compressed_bits = (format_byte & 0xc0) != 0;
+  h.format = format_byte & 0x3f;
   if (h.format > 10) {
     fail_at_byte(
         file, kFormat,
@@ -125,9 +121,9 @@ void parse_point_fields(std::string_view b, const std::string& file, LasHeader& 
   }
 }
 
-// Walks the variable length records between the header and the point data: each must fit, and
-// a laszip VLR means the points are compressed even if the format byte does not say so.
-void check_vlrs(std::string_view b, const std::string& file, const LasHeader& h) {
+// Walks the variable length records between the header and the point data: each must fit; a
+// laszip VLR means the points are compressed (even if the format byte does not say so).
+void check_vlrs(std::string_view b, const std::string& file, LasHeader& h) {
   constexpr std::size_t kVlrHeader = 54;
   std::size_t pos = h.header_size;
   for (std::uint32_t i = 0; i < h.vlr_count; ++i) {
@@ -141,9 +137,6 @@ void check_vlrs(std::string_view b, const std::string& file, const LasHeader& h)
     user = user.substr(0, user.find('\0'));
     std::uint16_t record_id = load_le<std::uint16_t>(b.data() + pos + 18);
     std::size_t length = load_le<std::uint16_t>(b.data() + pos + 20);
-    if (user == "laszip encoded" && record_id == 22204) {
-      laz_error(file, pos, "it has the 'laszip encoded' variable length record");
-    }
     if (h.point_offset - pos - kVlrHeader < length) {
       fail_at_byte(file, pos + 20,
                    "variable length record " + std::to_string(i + 1) + " of " +
@@ -151,8 +144,52 @@ void check_vlrs(std::string_view b, const std::string& file, const LasHeader& h)
                        ") runs past the start of point data at byte " +
                        std::to_string(h.point_offset));
     }
+    if (user == "laszip encoded" && record_id == 22204) {
+      h.laszip_vlr = pos + kVlrHeader;
+      h.laszip_vlr_length = length;
+    }
     pos += kVlrHeader + length;
   }
+  if (h.compressed_bits && h.laszip_vlr == 0) {
+    char hex[8];
+    std::snprintf(hex, sizeof hex, "0x%02x", unsigned(std::uint8_t(b[kFormat])));
+    fail_at_byte(file, kFormat,
+                 std::string("point format byte ") + hex +
+                     " marks the points LAZ-compressed but there is no 'laszip encoded' "
+                     "variable length record (user id 'laszip encoded', record 22204)");
+  }
+}
+
+// One point record to a point: coordinates at the header's scale and offset in double.
+bool add_record(const char* rec, const LasHeader& h, CloudBuilder& builder) {
+  Vec3 p;
+  for (int k = 0; k < 3; ++k) {
+    p[k] = double(load_le<std::int32_t>(rec + 4 * k)) * h.scale[k] + h.offset[k];
+  }
+  double intensity = load_le<std::uint16_t>(rec + 12);
+  // Formats 0-5 keep the class in the low 5 bits of byte 15 (bits 5-7 are flags); formats
+  // 6-10 give it the whole byte 16.
+  std::uint8_t cls = h.format >= 6 ? std::uint8_t(rec[16]) : std::uint8_t(rec[15] & 0x1f);
+  return builder.add(p, {}, intensity, cls);
+}
+
+void read_laz_points(std::string_view b, const std::string& file, const LasHeader& h,
+                     CloudBuilder& builder) {
+  builder.enable_intensity();
+  builder.enable_classification();
+  laz::LazInput in{b,       file,     h.laszip_vlr,   h.laszip_vlr_length, h.point_offset,
+                   h.count, h.format, h.record_length};
+  // Bounded by what the file could plausibly hold; the builder grows past it if need be.
+  builder.reserve(h.count, b.size() * 4);
+  laz::decode_laz_points(in, [&](const std::uint8_t* recs, std::size_t n, std::uint64_t first) {
+    const char* rec = reinterpret_cast<const char*>(recs);
+    for (std::size_t i = 0; i < n; ++i, rec += h.record_length) {
+      if (!add_record(rec, h, builder) && builder.strict()) {
+        fail_at_byte(file, h.point_offset,
+                     "point " + std::to_string(first + i) + " has a non-finite coordinate");
+      }
+    }
+  });
 }
 
 void read_points(std::string_view b, const std::string& file, const LasHeader& h,
@@ -168,18 +205,9 @@ void read_points(std::string_view b, const std::string& file, const LasHeader& h
   builder.enable_intensity();
   builder.enable_classification();
   builder.reserve(h.count, complete);
-  const bool extended = h.format >= 6;
   const char* rec = b.data() + h.point_offset;
   for (std::uint64_t i = 0; i < h.count; ++i, rec += h.record_length) {
-    Vec3 p;
-    for (int k = 0; k < 3; ++k) {
-      p[k] = double(load_le<std::int32_t>(rec + 4 * k)) * h.scale[k] + h.offset[k];
-    }
-    double intensity = load_le<std::uint16_t>(rec + 12);
-    // Formats 0-5 keep the class in the low 5 bits of byte 15 (bits 5-7 are flags); formats
-    // 6-10 give it the whole byte 16.
-    std::uint8_t cls = extended ? std::uint8_t(rec[16]) : std::uint8_t(rec[15] & 0x1f);
-    if (!builder.add(p, {}, intensity, cls) && builder.strict()) {
+    if (!add_record(rec, h, builder) && builder.strict()) {
       fail_at_byte(file, std::size_t(rec - b.data()),
                    "point " + std::to_string(i) + " has a non-finite coordinate");
     }
@@ -204,12 +232,21 @@ PointCloud read_las(std::string_view bytes, const std::string& name, const ReadO
   parse_point_fields(bytes, name, h);
   check_vlrs(bytes, name, h);
   CloudBuilder builder(name, options);
-  read_points(bytes, name, h, builder);
-  std::string variant = "LAS " + std::to_string(h.major) + "." + std::to_string(h.minor) +
-                        ", point format " + std::to_string(h.format) + ", " +
-                        std::to_string(h.record_length) + "-byte records";
+  const bool laz = h.laszip_vlr != 0;
+  if (laz) {
+    read_laz_points(bytes, name, h, builder);
+  } else {
+    read_points(bytes, name, h, builder);
+  }
+  std::string variant = std::string(laz ? "LAZ " : "LAS ") + std::to_string(h.major) + "." +
+                        std::to_string(h.minor) + ", point format " + std::to_string(h.format) +
+                        ", " + std::to_string(h.record_length) + "-byte records";
   if (h.record_length > kRecordSize[h.format]) {
     variant += " (" + std::to_string(h.record_length - kRecordSize[h.format]) + " extra bytes)";
+  }
+  if (laz) {
+    variant += ", " + laz::describe_laz({bytes, name, h.laszip_vlr, h.laszip_vlr_length,
+                                         h.point_offset, h.count, h.format, h.record_length});
   }
   PointCloud cloud = builder.finish(report, Format::kLas, variant);
   // Every record has intensity and class fields; all zeros means the scanner recorded none.
@@ -222,6 +259,32 @@ PointCloud read_las(std::string_view bytes, const std::string& name, const ReadO
   if (all_zero(cloud.intensity)) cloud.intensity.clear();
   if (all_zero(cloud.classification)) cloud.classification.clear();
   return cloud;
+}
+
+LasLayout read_las_layout(std::string_view bytes, const std::string& name) {
+  if (bytes.substr(0, 4) != "LASF") {
+    fail_at_byte(name, 0, "expected the LAS signature 'LASF', found " + quoted(bytes.substr(0, 4)));
+  }
+  if (bytes.size() < 227) fail_at_byte(name, bytes.size(), "the header is cut off");
+  LasHeader h;
+  parse_fixed_fields(bytes, name, h);
+  parse_point_fields(bytes, name, h);
+  check_vlrs(bytes, name, h);
+  LasLayout l;
+  l.minor = h.minor;
+  l.header_size = h.header_size;
+  l.point_offset = h.point_offset;
+  l.vlr_count = h.vlr_count;
+  l.vlr_end = h.header_size;
+  for (std::uint32_t i = 0; i < h.vlr_count; ++i) {
+    l.vlr_end += 54 + load_le<std::uint16_t>(bytes.data() + l.vlr_end + 20);
+  }
+  l.format = h.format;
+  l.record_length = h.record_length;
+  l.count = h.count;
+  l.laszip_vlr = h.laszip_vlr;
+  l.laszip_vlr_length = h.laszip_vlr_length;
+  return l;
 }
 
 }  // namespace ramus::formats_detail

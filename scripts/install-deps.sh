@@ -28,7 +28,7 @@ fi
 # npm tools used by the test suite live in tools/node_modules (not committed).
 # Installs again when a package the list names is missing (the list grew since the last install).
 npm_missing=0
-for p in gltf-validator three playwright-core; do
+for p in gltf-validator three playwright-core laz-perf; do
   [ -d "tools/node_modules/$p" ] || npm_missing=1
 done
 if [ -f tools/package.json ] && [ "$npm_missing" -eq 1 ]; then

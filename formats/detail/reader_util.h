@@ -121,4 +121,16 @@ PointCloud read_las(std::string_view bytes, const std::string& name, const ReadO
 PointCloud read_pcd(std::string_view bytes, const std::string& name, const ReadOptions& options,
                     ReadReport* report);
 
+// Where the parts of a LAS/LAZ file are, after the header and VLR checks of read_las.
+struct LasLayout {
+  unsigned minor = 0;
+  std::size_t header_size = 0, point_offset = 0, vlr_end = 0;  // vlr_end: after the last VLR
+  std::uint32_t vlr_count = 0;
+  unsigned format = 0;  // compression bits cleared
+  std::size_t record_length = 0;
+  std::uint64_t count = 0;
+  std::size_t laszip_vlr = 0, laszip_vlr_length = 0;  // payload offset (0: none) and length
+};
+LasLayout read_las_layout(std::string_view bytes, const std::string& name);
+
 }  // namespace ramus::formats_detail

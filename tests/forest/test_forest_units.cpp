@@ -1,11 +1,10 @@
 // Units of the forest-plot pipeline (docs/scale.md): trees joined and split, placement, the
-// LAS writer, voxel thinning, the tile manifest, the core test and the detection score.
+// voxel thinning, the tile manifest, the core test and the detection score.
 #include <catch2/catch.hpp>
 #include <cmath>
 
 #include "backends/scanner/forest.h"
 #include "core/skeleton_trees.h"
-#include "formats/las_writer.h"
 #include "formats/point_cloud_io.h"
 #include "formats/tile_manifest.h"
 #include "formats/voxel_thin.h"
@@ -80,27 +79,6 @@ TEST_CASE("plant moves a tree's root to the ground at a place", "[forest]") {
   CHECK(p.nodes[0].position == Vec3{10, 20, 0});
   CHECK(p.nodes[3].position == Vec3{11, 20, 3.5});
   CHECK(scanner::crown_radius(p) == Approx(1));
-}
-
-TEST_CASE("the LAS writer's files read back at 1 mm", "[forest][las]") {
-  PointCloud c;
-  c.offset = {500000, 4000000, 100};
-  c.positions = {{0.0012f, -3.5f, 2.25f}, {10.f, 20.f, -1.f}};
-  c.classification = {2, 5};
-  const std::string bytes = point_cloud_to_las(c);
-  REQUIRE(bytes.size() == 227 + 2 * 20);
-  ReadReport report;
-  const PointCloud back = read_point_cloud_bytes(bytes, Format::kAuto, "t.las", {}, &report);
-  CHECK(report.variant.find("LAS 1.2") != std::string::npos);
-  REQUIRE(back.size() == 2);
-  for (std::size_t i = 0; i < 2; ++i) {
-    for (int k = 0; k < 3; ++k) CHECK(back.world(i)[k] == Approx(c.world(i)[k]).margin(0.0006));
-  }
-  CHECK(back.classification == c.classification);
-  CHECK(point_cloud_to_las(c) == bytes);  // deterministic bytes
-  PointCloud far = c;
-  far.positions.push_back({3e6f, 0, 0});
-  CHECK_THROWS_AS(point_cloud_to_las(far), WriteError);
 }
 
 TEST_CASE("voxel thinning keeps the first point of each cube", "[forest][thin]") {

@@ -104,10 +104,3 @@ TEST_CASE("real scans: pytlidar LAS 1.4 format 6 with a zeroed header box", "[re
   CHECK(read_ms(path, timed) < 1000);
 }
 
-TEST_CASE("real scans: treels_spruce.laz is reported as LAZ-compressed", "[real][laz]") {
-  const std::string path = shared_data("treels_spruce.laz");
-  std::string e = error_of([&] { read_point_cloud(path); });
-  CHECK(e.find("byte 104: the file is LAZ-compressed (point format byte 0x80") !=
-        std::string::npos);
-  CHECK(e.find("not read yet") != std::string::npos);
-}

@@ -1,6 +1,9 @@
 // `ramus classify` and `ramus reconstruct --leaves-in-scan` end to end: the PLY with the `wood`
 // property reads back, the wood-only file, determinism, bad input and options.
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <cmath>
+#include <cstring>
 #include <sstream>
 
 #include "../cli/cli_runner.h"
@@ -139,4 +142,47 @@ TEST_CASE("ramus reconstruct: auto keeps a bark-only scan whole", "[wood_cli]") 
   REQUIRE(r.status == 0);
   CHECK(r.out.find("removed") == std::string::npos);
   CHECK(r.out.find("all points kept") != std::string::npos);
+}
+
+TEST_CASE("ramus classify: LAS and LAZ outputs carry wood and leaf_score as extra bytes",
+          "[wood_cli][laz]") {
+  TempDir dir;
+  const fs::path scan = leafy_scan(dir);
+  const fs::path las = dir.path / "split.las", laz = dir.path / "split.laz",
+                 wood = dir.path / "wood.laz", ply = dir.path / "split.ply";
+  REQUIRE(
+      run_ramus({"classify", scan.string(), "-o", las.string(), "--wood", wood.string()}).status ==
+      0);
+  REQUIRE(run_ramus({"classify", scan.string(), "-o", laz.string()}).status == 0);
+  REQUIRE(run_ramus({"classify", scan.string(), "-o", ply.string()}).status == 0);
+  const ramus::PointCloud in = ramus::read_point_cloud(scan.string());
+  ramus::ReadReport report;
+  const ramus::PointCloud a = ramus::read_point_cloud(las.string(), {}, &report);
+  CHECK(report.variant == "LAS 1.4, point format 6, 35-byte records (5 extra bytes)");
+  const ramus::PointCloud b = ramus::read_point_cloud(laz.string(), {}, &report);
+  CHECK(report.variant.find("LAZ 1.4, point format 6, 35-byte records (5 extra bytes), layered") ==
+        0);
+  REQUIRE(a.size() == in.size());
+  REQUIRE(b.size() == in.size());
+  double worst = 0;
+  for (std::size_t i = 0; i < in.size(); ++i) {
+    worst = std::max({worst, ramus::distance(a.world(i), in.world(i)),
+                      ramus::distance(b.world(i), in.world(i))});
+  }
+  CHECK(worst <= 0.5e-4 * std::sqrt(3.0) + 1e-9);  // 0.1 mm grid
+  // The wood flags: byte 30 of each format-6 record; as many as the PLY's wood points.
+  const std::string bytes = slurp(las), text = slurp(ply);
+  std::uint32_t offset;
+  std::memcpy(&offset, bytes.data() + 96, 4);
+  std::size_t wood_points = 0;
+  for (std::size_t i = 0; i < a.size(); ++i) wood_points += bytes[offset + 35 * i + 30] == 1;
+  CHECK(bytes.find("wood") < offset);  // named in the Extra Bytes VLR
+  CHECK(bytes.find("leaf_score") < offset);
+  CHECK(ramus::read_point_cloud(wood.string()).size() == wood_points);
+  CHECK(wood_points > 0);
+  CHECK(wood_points < a.size());
+
+  const CliResult r = run_ramus({"classify", scan.string(), "-o", las.string(), "--ascii"});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("--ascii applies to PLY outputs only") != std::string::npos);
 }
