@@ -27,6 +27,7 @@ void add_lsp(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_tile(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_merge(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_score_trees(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_tiles(CLI::App&, const GlobalOptions&, std::function<int()>&);
 
 const std::vector<CommandSpec>& command_table() {
   static const std::vector<CommandSpec> table = {
@@ -44,6 +45,7 @@ const std::vector<CommandSpec>& command_table() {
       {"build", add_build},
       {"preview", add_preview},
       {"view", add_view},
+      {"tiles", add_tiles},
       {"reconstruct", add_reconstruct},
       {"classify", add_classify},
       {"scan", add_scan},
