@@ -231,7 +231,11 @@ void for_chunks(std::size_t nchunks, int threads, const Body& body) {
 
 std::string gigabytes(double bytes) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f GB", bytes / 1e9);
+  if (bytes < 1e9) {
+    std::snprintf(buf, sizeof buf, "%.2f MB", bytes / 1e6);
+  } else {
+    std::snprintf(buf, sizeof buf, "%.2f GB", bytes / 1e9);
+  }
   return buf;
 }
 
@@ -247,7 +251,7 @@ void check_limits(const PassInfo& info, std::uint64_t modules, std::uint64_t par
   if (need > double(limit) || params > 0xffffffffull) {
     throw DeriveError(info.where + ": the string would need " + gigabytes(need) + " (" +
                       std::to_string(modules) + " modules), more than the memory limit of " +
-                      gigabytes(double(limit)));
+                      gigabytes(double(limit)) + " (--max-memory)");
   }
   if (info.peak_bytes) *info.peak_bytes = std::max(*info.peak_bytes, std::size_t(need));
 }
