@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# CI's second half, run by `make test` after the suite (issue 22, docs/robustness.md): one clang
+# CI's second half, run by `make test RAMUS_CI_EXTRA=1` after the suite (issue 22,
+# docs/robustness.md): one clang
 # build with ASan+UBSan (the clang-asan preset, build/clang-asan) serves both checks:
 #   1. under the sanitizers, the unit tests of the libraries, the runtime and every fuzz corpus
 #      replayed through its target's entry point (no suppressions: any report fails);
 #   2. its `ramus` against GCC's (build/release) on the fixed set of scripts/compare-compilers.sh:
 #      any sha256 that differs fails.
-# RAMUS_CI_EXTRA=0 skips it (local `make test` while iterating).
 set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 cd "$root"

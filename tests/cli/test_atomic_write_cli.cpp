@@ -37,8 +37,9 @@ std::vector<std::string> folder_listing(const fs::path& dir) {
 
 }  // namespace
 
-TEST_CASE("build killed by SIGKILL while writing leaves the old output and no temporary",
-          "[cli][atomic]") {
+TEST_CASE(
+    "atomic write: build killed by SIGKILL while writing leaves the old output and no temporary",
+    "[cli][atomic]") {
   cli_test::TempDir dir;
   const fs::path out_dir = dir.path / "out";
   fs::create_directories(out_dir);

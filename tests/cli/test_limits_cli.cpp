@@ -21,7 +21,7 @@ bool has(const std::string& text, const std::string& part) {
 
 }  // namespace
 
-TEST_CASE("the derivation's memory limit: --max-memory", "[cli][limits]") {
+TEST_CASE("limits: the memory of the derivation: --max-memory", "[cli][limits]") {
   cli_test::TempDir dir;
   const std::string f = dir.write("doubling.ramus", kDoubling).string();
   const auto r = run_ramus({"derive", f, "-n", "20", "--max-memory", "1M", "--print"});
@@ -41,7 +41,7 @@ TEST_CASE("the derivation's memory limit: --max-memory", "[cli][limits]") {
   CHECK(run_ramus({"derive", f, "--max-memory", "lots"}).status != 0);
 }
 
-TEST_CASE("the module limit: --max-modules, with no output", "[cli][limits]") {
+TEST_CASE("limits: the modules of the derivation: --max-modules and no output", "[cli][limits]") {
   cli_test::TempDir dir;
   const std::string f = dir.write("doubling.ramus", kDoubling).string();
   const fs::path glb = dir.path / "tree.glb";
@@ -51,7 +51,7 @@ TEST_CASE("the module limit: --max-modules, with no output", "[cli][limits]") {
   CHECK_FALSE(fs::exists(glb));
 }
 
-TEST_CASE("the nesting limit of the parser: 128 levels of brackets", "[cli][limits]") {
+TEST_CASE("limits: the nesting of the parser: 128 levels of brackets", "[cli][limits]") {
   cli_test::TempDir dir;
   std::string deep = "lsystem t { axiom ";
   for (int i = 0; i < 200; ++i) deep += "[F";
@@ -66,7 +66,7 @@ TEST_CASE("the nesting limit of the parser: 128 levels of brackets", "[cli][limi
   CHECK_FALSE(fs::exists(glb));
 }
 
-TEST_CASE("the .rmb limits: file size and decompressed size", "[cli][limits]") {
+TEST_CASE("limits: .rmb file size and decompressed size", "[cli][limits]") {
   cli_test::TempDir dir;
   // A zstd frame of 2 KiB that claims 65 MiB of content (a decompression bomb): refused from
   // the frame header, before anything is allocated.
