@@ -66,6 +66,7 @@ int run_derive(const DeriveArgs& a) {
   DeriveOptions d;
   d.steps = a.grow.steps;
   d.max_modules = a.grow.max_modules;
+  d.max_bytes = a.grow.max_memory;
   d.threads = a.threads;
   DeriveStats st;
   try {
@@ -77,6 +78,7 @@ int run_derive(const DeriveArgs& a) {
       t.seed = g.settings.seed;
       t.steps = st.steps;
       t.max_modules = a.grow.max_modules;
+      t.max_bytes = a.grow.max_memory;
       t.threads = a.threads;
       write_skeleton_json(a.skeleton, interpret(g, s, t));
     } else {

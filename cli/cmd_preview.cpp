@@ -47,7 +47,8 @@ void check_options(const PreviewArgs& a, PreviewInput kind) {
                                                               {"--seed", "--seed"},
                                                               {"--define", "-D/--define"},
                                                               {"--system", "--system"},
-                                                              {"--max-modules", "--max-modules"}};
+                                                              {"--max-modules", "--max-modules"},
+                                                              {"--max-memory", "--max-memory"}};
   for (const auto& [name, shown] : grow_options) {
     if (!grammar && a.command->count(name) > 0) {
       throw UserError(std::string(shown) + " applies to grammars only; " + a.grow.file + " is a " +

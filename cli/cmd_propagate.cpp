@@ -67,10 +67,12 @@ std::string tree_name(int k, int count) {
 Skeleton grow(const ir::Grammar& g, const PropagateArgs& a) {
   DeriveOptions d;
   d.max_modules = a.grow.max_modules;
+  d.max_bytes = a.grow.max_memory;
   TurtleOptions t;
   t.seed = g.settings.seed;
   t.steps = g.settings.derive;
   t.max_modules = a.grow.max_modules;
+  t.max_bytes = a.grow.max_memory;
   try {
     return interpret(g, derive(g, d), t);
   } catch (const DeriveError& e) {
@@ -168,6 +170,7 @@ void add_propagate(CLI::App& app, const GlobalOptions& global, std::function<int
   sub->add_option("-D,--define", args->grow.defines, "override a param: name=value");
   sub->add_option("--system", args->grow.system, "lsystem block (default: the first)");
   sub->add_option("--max-modules", args->grow.max_modules, "stop with an error above this length");
+  add_max_memory_option(sub, args->grow.max_memory);
   sub->callback(
       [args, &global, &run] { run = [args, &global] { return run_propagate(*args, global); }; });
 }

@@ -69,6 +69,14 @@ void add_grow_options(CLI::App* sub, GrowArgs& a) {
   sub->add_option("-D,--define", a.defines, "override a param: name=value");
   sub->add_option("--system", a.system, "lsystem block (default: the first)");
   sub->add_option("--max-modules", a.max_modules, "stop with an error above this length");
+  add_max_memory_option(sub, a.max_memory);
+}
+
+void add_max_memory_option(CLI::App* sub, std::uint64_t& bytes) {
+  sub->add_option("--max-memory", bytes,
+                  "stop with an error when the derivation would need more memory (bytes, or with "
+                  "K, M, G: 512M); default: 80% of physical memory")
+      ->transform(CLI::AsSizeValue(false));
 }
 
 GrowOptions to_grow_options(const GrowArgs& a) {
@@ -78,6 +86,7 @@ GrowOptions to_grow_options(const GrowArgs& a) {
   opt.seed = a.seed;
   opt.defines = parse_defines(a.defines);
   opt.max_modules = a.max_modules;
+  opt.max_bytes = a.max_memory;
   return opt;
 }
 

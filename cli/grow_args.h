@@ -1,5 +1,6 @@
 // The options every subcommand that reads a grammar shares (build, derive, preview, scan):
-// FILE [-n N] [--seed S] [-D name=value]... [--system NAME] [--max-modules N].
+// FILE [-n N] [--seed S] [-D name=value]... [--system NAME] [--max-modules N] [--max-memory SIZE].
+
 #pragma once
 
 #include <cstdint>
@@ -21,9 +22,12 @@ struct GrowArgs {
   std::vector<std::string> defines;
   std::string system;
   std::uint64_t max_modules = 100'000'000;
+  std::uint64_t max_memory = 0;  // bytes; 0: 80% of physical memory
 };
 
 void add_grow_options(CLI::App* sub, GrowArgs& args);
+// --max-memory SIZE, for the subcommands that declare their own grow options.
+void add_max_memory_option(CLI::App* sub, std::uint64_t& bytes);
 
 // The options as the pipeline takes them (-D parsed; throws UserError on a malformed one).
 GrowOptions to_grow_options(const GrowArgs& args);

@@ -19,10 +19,19 @@ namespace {
 
 constexpr std::size_t kChunk = 1 << 15;  // modules per chunk: fixed, so output ignores threads
 
+// A decoded .rmb may hold location indexes the verifier did not tie to the table (found by
+// fuzz_decode_rmb): an index out of range reads as "?" instead of past the end.
+const std::string& location_of(const ir::Grammar& g, std::size_t where) {
+  static const std::string unknown = "?";
+  return where < g.locations.size() ? g.locations[where] : unknown;
+}
+
 std::string describe(const ir::Grammar& g, const ir::Production& p, const ExprError& e,
                      const PassInfo& info, std::size_t i) {
-  return g.locations[g.codes[e.code].where] + ": " + e.what() + " in production `" + p.text +
-         "` (" + g.locations[p.where] + ") at " + info.where + ", module " + std::to_string(i);
+  const std::string& at =
+      e.code < g.codes.size() ? location_of(g, g.codes[e.code].where) : location_of(g, ~0ull);
+  return at + ": " + e.what() + " in production `" + p.text + "` (" + location_of(g, p.where) +
+         ") at " + info.where + ", module " + std::to_string(i);
 }
 
 // Everything a sweep reads; one per pass, shared read-only by the chunks.
@@ -232,7 +241,11 @@ void for_chunks(std::size_t nchunks, int threads, const Body& body) {
 
 std::string gigabytes(double bytes) {
   char buf[32];
-  std::snprintf(buf, sizeof buf, "%.2f GB", bytes / 1e9);
+  if (bytes < 1e9) {
+    std::snprintf(buf, sizeof buf, "%.2f MB", bytes / 1e6);
+  } else {
+    std::snprintf(buf, sizeof buf, "%.2f GB", bytes / 1e9);
+  }
   return buf;
 }
 
@@ -248,7 +261,7 @@ void check_limits(const PassInfo& info, std::uint64_t modules, std::uint64_t par
   if (need > double(limit) || params > 0xffffffffull) {
     throw DeriveError(info.where + ": the string would need " + gigabytes(need) + " (" +
                       std::to_string(modules) + " modules), more than the memory limit of " +
-                      gigabytes(double(limit)));
+                      gigabytes(double(limit)) + " (--max-memory)");
   }
   if (info.peak_bytes) *info.peak_bytes = std::max(*info.peak_bytes, std::size_t(need));
 }

@@ -9,10 +9,12 @@ Skeleton grow_grammar(const ir::Grammar& g, const GrowOptions& options) {
   DeriveOptions d;
   d.steps = options.steps;
   d.max_modules = options.max_modules;
+  d.max_bytes = options.max_bytes;
   TurtleOptions t;
   t.seed = g.settings.seed;
   t.steps = options.steps.value_or(g.settings.derive);
   t.max_modules = options.max_modules;
+  t.max_bytes = options.max_bytes;
   try {
     ModuleString s = derive(g, d);
     return interpret(g, s, t);

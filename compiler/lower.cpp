@@ -83,7 +83,9 @@ class Lowerer {
   void collect_constants() {
     std::vector<std::uint8_t> seen(prog_.files.size(), 0);
     visit_constants(0, seen);
-    for (const auto& [name, value] : opt_.defines) {
+    for (const auto& define : opt_.defines) {
+      const std::string& name =
+          define.first;  // not a structured binding: clang 14 cannot capture one
       auto it = std::find_if(constants_.begin(), constants_.end(),
                              [&](const ir::Constant& c) { return c.name == name; });
       if (it == constants_.end()) throw LowerError("-D " + name + ": no param of that name");

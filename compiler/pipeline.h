@@ -22,6 +22,7 @@ struct GrowOptions {
   std::optional<std::uint64_t> seed;   // overrides `seed S`
   std::vector<std::pair<std::string, double>> defines;  // -D name=value (params only)
   std::uint64_t max_modules = 100'000'000;
+  std::uint64_t max_bytes = 0;  // memory guard of the derivation (--max-memory); 0: 80% of RAM
 };
 
 // Thrown when the grammar has errors (they are in the DiagnosticSink) or derivation fails

@@ -129,7 +129,7 @@ class Parser {
       expect(':', "':' after the key");
       skip_ws();
       JsonValue member = value(depth + 1);
-      v.members.emplace_back(std::move(key), std::move(member));
+      v.members.push_back({std::move(key), std::move(member)});
       skip_ws();
       if (pos_ < s_.size() && s_[pos_] == ',') {
         ++pos_;

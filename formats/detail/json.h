@@ -10,17 +10,26 @@
 
 namespace ramus::formats_detail {
 
+struct JsonMember;
+
 struct JsonValue {
   enum class Kind { kNull, kBool, kNumber, kString, kArray, kObject };
   Kind kind = Kind::kNull;
   bool boolean = false;
   double number = 0;
-  std::string text;                                        // kString
-  std::vector<JsonValue> items;                            // kArray
-  std::vector<std::pair<std::string, JsonValue>> members;  // kObject, in file order
+  std::string text;                 // kString
+  std::vector<JsonValue> items;     // kArray
+  std::vector<JsonMember> members;  // kObject, in file order
   std::size_t line = 1, column = 1;
 
   const JsonValue* find(std::string_view key) const;
+};
+
+// A key and its value. Not std::pair<std::string, JsonValue>: a pair of a type still incomplete
+// inside JsonValue does not compile with clang and libstdc++.
+struct JsonMember {
+  std::string first;
+  JsonValue second;
 };
 
 // "null", "true or false", "a number", ... for messages.

@@ -5,11 +5,14 @@
 #include <map>
 #include <set>
 
+#include "compiler/pipeline.h"
 #include "core/number_text.h"
 #include "formats/rmb/rmb_pieces_ast.h"
 #include "formats/rmb/rmb_voxels.h"
 #include "grammar/builtins.h"
+#include "grammar/check.h"
 #include "grammar/format.h"
+#include "grammar/loader.h"
 #include "grammar/modules.h"
 
 namespace ramus {
@@ -43,6 +46,10 @@ class Decompiler {
 
   ast::File run() {
     ast::LSystem ls;
+    // The decoder takes any bytes as the block's name; only an identifier can be written back.
+    if (!is_identifier(g_.name)) {
+      throw DecompileError("lsystem block name \"" + g_.name + "\" is not an identifier");
+    }
     ls.name = ident(g_.name);
     settings(ls);
     symbol_set(ls);
@@ -387,9 +394,39 @@ class Decompiler {
 
 }  // namespace
 
+// The decoder checks the structure of a file, not every rule of the language (a built-in module
+// with 17 parameters decodes and runs); text that `ramus check` would refuse is not written.
+namespace {
+
+std::string checked(std::string text) {
+  SourceManager sm;
+  DiagnosticSink diags;
+  Program program = load_program_text("decompiled.ramus", text, sm, diags);
+  if (!diags.has_errors() && !program.files.empty()) check_program(program, sm, diags);
+  for (const Diagnostic& d : diags.all()) {
+    if (d.severity == Severity::Error) {
+      throw DecompileError("the grammar breaks a rule of the language: " + d.message);
+    }
+  }
+  // Lowering checks the values of the settings (max_depth 0 decodes and runs, clamped).
+  const bool has_lsystem =
+      std::any_of(program.files[0].decls.begin(), program.files[0].decls.end(),
+                  [](const ast::Decl& d) { return std::holds_alternative<ast::LSystem>(d); });
+  if (has_lsystem) {
+    try {
+      lower_checked(program, GrowOptions{}, sm, diags);
+    } catch (const std::exception& e) {
+      throw DecompileError(std::string("the grammar breaks a rule of the language: ") + e.what());
+    }
+  }
+  return text;
+}
+
+}  // namespace
+
 ast::File decompile_to_ast(const ir::Grammar& g) { return Decompiler(g).run(); }
 
-std::string decompile(const ir::Grammar& g) { return format_file(decompile_to_ast(g)); }
+std::string decompile(const ir::Grammar& g) { return checked(format_file(decompile_to_ast(g))); }
 
 std::string decompile(const RmbContents& contents) {
   ast::File file;
@@ -414,7 +451,7 @@ std::string decompile(const RmbContents& contents) {
     file.decls.emplace_back(pieces_to_ast(s, contents.pieces));
   }
   for (const RmbVoxelTable& t : contents.voxels) file.decls.emplace_back(voxels_to_ast(t));
-  return format_file(file);
+  return checked(format_file(file));
 }
 
 }  // namespace ramus

@@ -3,11 +3,10 @@
 // initialized; whatever it holds (broken headers, JSON of any shape, grammar text of any kind in
 // didOpen/didChange, positions anywhere) the server must answer without crashing, and every
 // answer must be JSON.
-#include <nlohmann/json.hpp>
-
 #include <cstdint>
 #include <cstdlib>
 #include <cstring>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "lsp/framing.h"
