@@ -85,7 +85,11 @@ Graph voxelize(const std::vector<Eigen::Vector3d>& points, const std::vector<std
 
 void link_nearest(Graph& graph, int k) {
   if (graph.size() < 2) return;
-  PointIndex index(graph.pos);
+  link_nearest(graph, k, PointIndex(graph.pos));
+}
+
+void link_nearest(Graph& graph, int k, const PointIndex& index) {
+  if (graph.size() < 2) return;
   const std::size_t kk = std::min<std::size_t>(std::size_t(k) + 1, graph.size());
   // The queries run in parallel into fixed slots; edges are then added in vertex order, so the
   // graph does not depend on the schedule.
@@ -152,25 +156,6 @@ struct Gap {
   std::uint32_t from = kNone, to = kNone;
 };
 
-// For every component not yet attached, its closest pair to the attached vertices.
-std::vector<Gap> closest_gaps(const Graph& g, const std::vector<std::uint32_t>& label,
-                              const std::vector<std::uint8_t>& attached, std::uint32_t ncomp) {
-  std::vector<std::uint32_t> ids;
-  for (std::uint32_t v = 0; v < g.size(); ++v) {
-    if (attached[label[v]]) ids.push_back(v);
-  }
-  std::vector<Gap> best(ncomp);
-  PointIndex index(g.pos, std::move(ids));
-  for (std::uint32_t v = 0; v < g.size(); ++v) {
-    if (attached[label[v]]) continue;
-    double d2;
-    std::uint32_t to = index.nearest(g.pos[v], &d2);
-    Gap& b = best[label[v]];
-    if (to != kNone && d2 < b.d2) b = {d2, v, to};
-  }
-  return best;
-}
-
 }  // namespace
 
 std::size_t bridge_gaps(Graph& graph, const std::vector<std::uint32_t>& roots, double max_gap) {
@@ -178,23 +163,56 @@ std::size_t bridge_gaps(Graph& graph, const std::vector<std::uint32_t>& roots, d
   std::vector<std::uint32_t> label = components(graph, &ncomp);
   std::vector<std::uint8_t> attached(ncomp, 0);
   for (std::uint32_t r : roots) attached[label[r]] = 1;
+  // The attached set only grows, so each vertex keeps its nearest attached vertex found so far
+  // and each round searches only the vertices attached since the round before: one k-d tree
+  // per newly attached batch instead of one over everything attached in every round. A strictly
+  // nearer vertex replaces the one kept, so the earliest attached wins a tie.
+  std::vector<Gap> nearest(graph.size());
+  std::vector<std::uint32_t> fresh;
+  for (std::uint32_t v = 0; v < graph.size(); ++v) {
+    if (attached[label[v]]) fresh.push_back(v);
+  }
   std::size_t bridges = 0;
   // Each round attaches the components whose gap is within twice the smallest gap, so a chain
   // of fragments is followed link by link rather than jumped across.
   for (int round = 0; round < 10000; ++round) {
     if (std::all_of(attached.begin(), attached.end(), [](auto a) { return a != 0; })) break;
-    std::vector<Gap> gaps = closest_gaps(graph, label, attached, ncomp);
+    if (!fresh.empty()) {
+      const PointIndex index(graph.pos, std::move(fresh));
+      fresh.clear();
+      tbb::parallel_for(tbb::blocked_range<std::uint32_t>(0, std::uint32_t(graph.size()), 1024),
+                        [&](const tbb::blocked_range<std::uint32_t>& r) {
+                          for (std::uint32_t v = r.begin(); v != r.end(); ++v) {
+                            if (attached[label[v]]) continue;
+                            double d2;
+                            const std::uint32_t to = index.nearest(graph.pos[v], &d2);
+                            if (to != kNone && d2 < nearest[v].d2) nearest[v] = {d2, v, to};
+                          }
+                        });
+    }
+    // For every component not yet attached, its closest pair to the attached vertices.
+    std::vector<Gap> gaps(ncomp);
+    for (std::uint32_t v = 0; v < graph.size(); ++v) {
+      if (attached[label[v]]) continue;
+      Gap& b = gaps[label[v]];
+      if (nearest[v].to != kNone && nearest[v].d2 < b.d2) b = nearest[v];
+    }
     double smallest = std::numeric_limits<double>::infinity();
     for (std::uint32_t c = 0; c < ncomp; ++c) {
       if (!attached[c]) smallest = std::min(smallest, gaps[c].d2);
     }
     if (!(smallest <= max_gap * max_gap)) break;
     const double limit = std::min(4 * smallest, max_gap * max_gap);
+    std::vector<std::uint8_t> now(ncomp, 0);
     for (std::uint32_t c = 0; c < ncomp; ++c) {
       if (attached[c] || gaps[c].d2 > limit) continue;
       graph.add_edge(gaps[c].from, gaps[c].to, gaps[c].d2);
       attached[c] = 1;
+      now[c] = 1;
       ++bridges;
+    }
+    for (std::uint32_t v = 0; v < graph.size(); ++v) {
+      if (now[label[v]]) fresh.push_back(v);
     }
   }
   return bridges;

@@ -16,8 +16,12 @@ namespace ramus::bsg {
 Graph voxelize(const std::vector<Eigen::Vector3d>& points, const std::vector<std::uint8_t>& keep,
                double voxel, std::vector<std::uint32_t>& point_vertex);
 
+class PointIndex;
+
 // Links every vertex to its k nearest neighbours (symmetrically), weight = squared distance.
+// `index` is a PointIndex over graph.pos, for callers that search the same vertices again.
 void link_nearest(Graph& graph, int k);
+void link_nearest(Graph& graph, int k, const PointIndex& index);
 
 // Moves every vertex to the mean of itself and its graph neighbours, `steps` times. On samples of
 // a branch's bark this draws them towards the branch axis, so that Dijkstra's tree follows the

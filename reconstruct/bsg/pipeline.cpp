@@ -69,15 +69,17 @@ BaseParams base_params(const ReconstructOptions& o, const Scale& s) {
   return p;
 }
 
-// Graph vertex of every base, without repeats (two bases on one vertex are one tree).
-std::vector<std::uint32_t> root_vertices(const Graph& g,
-                                         const std::vector<Eigen::Vector3d>& bases) {
+// Graph vertex of every base, without repeats (two bases on one vertex are one tree), and the
+// footprint half-width of each (the first base's on a shared vertex). `index` is over g.pos.
+std::vector<std::uint32_t> root_vertices(const Graph& g, const PointIndex& index,
+                                         const Bases& bases, std::vector<double>& reach) {
   std::vector<std::uint32_t> roots;
   if (g.size() == 0) return roots;
-  PointIndex index(g.pos);
-  for (const auto& b : bases) {
-    const std::uint32_t v = index.nearest(b);
-    if (std::find(roots.begin(), roots.end(), v) == roots.end()) roots.push_back(v);
+  for (std::size_t b = 0; b < bases.roots.size(); ++b) {
+    const std::uint32_t v = index.nearest(bases.roots[b]);
+    if (std::find(roots.begin(), roots.end(), v) != roots.end()) continue;
+    roots.push_back(v);
+    reach.push_back(bases.reach[b]);
   }
   return roots;
 }
@@ -157,19 +159,13 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
   t = Clock::now();
   std::vector<std::uint32_t> point_vertex;
   Graph graph = voxelize(pts, keep, scale.voxel, point_vertex);
-  link_nearest(graph, std::max(1, o.neighbours));
-  const std::vector<std::uint32_t> roots = root_vertices(graph, bases.roots);
-  // Footprint half-width of each distinct root vertex (two bases on one vertex are one tree).
   std::vector<double> root_reach;
+  std::vector<std::uint32_t> roots;
   {
-    PointIndex index(graph.pos);
-    std::vector<std::uint32_t> seen;
-    for (std::size_t b = 0; b < bases.roots.size() && graph.size(); ++b) {
-      const std::uint32_t v = index.nearest(bases.roots[b]);
-      if (std::find(seen.begin(), seen.end(), v) != seen.end()) continue;
-      seen.push_back(v);
-      root_reach.push_back(bases.reach[b]);
-    }
+    // One k-d tree over the voxel vertices for the neighbours and the roots.
+    const PointIndex index(graph.pos);
+    link_nearest(graph, std::max(1, o.neighbours), index);
+    roots = root_vertices(graph, index, bases, root_reach);
   }
   const double max_gap = o.max_gap > 0 ? o.max_gap : std::max(0.08 * scale.height, 3 * scale.voxel);
   res.counts.bridged_gaps = bridge_gaps(graph, roots, max_gap);
@@ -196,6 +192,7 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
   Forest forest;
   std::vector<Bsg> trees;
   Graph weighted = graph;
+  const PointIndex graph_index(graph.pos);  // graph.pos does not change from here on
   for (int it = 0; it < std::max(1, o.max_iterations); ++it) {
     t = Clock::now();
     Forest next = shortest_path_forest(weighted, roots);
@@ -209,7 +206,7 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
       res.timings.refine += seconds_since(t);
       break;
     }
-    weighted = reweighted(graph, trees, o.reweight_strength, 3 * scale.voxel);
+    weighted = reweighted(graph, graph_index, trees, o.reweight_strength, 3 * scale.voxel);
     res.timings.refine += seconds_since(t);
   }
 

@@ -71,15 +71,16 @@ std::vector<Eigen::Vector3d> orientation_field(const Bsg& bsg) {
   // The root has no incoming edge; Eq. 2 is given the weighted direction of its children so that
   // the system stays definite for a root without children too.
   if (n) {
-    root_dir = root_dir.norm() > 0 ? Eigen::Vector3d(root_dir.normalized()) : Eigen::Vector3d::UnitZ();
+    root_dir =
+        root_dir.norm() > 0 ? Eigen::Vector3d(root_dir.normalized()) : Eigen::Vector3d::UnitZ();
     t.emplace_back(0, 0, c[0] * c[0]);
     rhs.row(0) += c[0] * c[0] * root_dir.transpose();
   }
   Eigen::MatrixXd x = solve(n, t, rhs);
   std::vector<Eigen::Vector3d> o(n);
   for (std::size_t v = 0; v < n; ++v) {
-    Eigen::Vector3d ov = x.rows() ? Eigen::Vector3d(x.row(Eigen::Index(v)).transpose())
-                                  : Eigen::Vector3d::Zero();
+    Eigen::Vector3d ov =
+        x.rows() ? Eigen::Vector3d(x.row(Eigen::Index(v)).transpose()) : Eigen::Vector3d::Zero();
     o[v] = ov.norm() > 1e-12 ? Eigen::Vector3d(ov.normalized()) : Eigen::Vector3d::UnitZ();
   }
   return o;
@@ -127,10 +128,9 @@ void refine(Bsg& bsg, double own) {
   bsg.pos = smoothed_positions(bsg, orientation_field(bsg));
 }
 
-Graph reweighted(const Graph& base, const std::vector<Bsg>& refined, double strength,
-                 double max_new_edge) {
+Graph reweighted(const Graph& base, const PointIndex& index, const std::vector<Bsg>& refined,
+                 double strength, double max_new_edge) {
   Graph g = base;
-  PointIndex index(base.pos);
   for (const Bsg& b : refined) {
     for (std::uint32_t u = 1; u < b.size(); ++u) {
       const std::uint32_t v = b.parent[u];

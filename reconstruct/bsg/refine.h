@@ -26,8 +26,10 @@ void refine(Bsg& bsg, double own);
 // Iterated BSG construction: for every edge of the refined BSG, the graph edge between the
 // vertices closest to its ends is scaled by (1 - strength * |cos|) of the angle between them,
 // so that Dijkstra prefers edges aligned with the refined branches. `base` holds the unscaled
-// graph; the scaling is applied to a fresh copy each round, never compounded.
-Graph reweighted(const Graph& base, const std::vector<Bsg>& refined, double strength,
-                 double max_new_edge);
+// graph; the scaling is applied to a fresh copy each round, never compounded. `base_index`
+// is a PointIndex over base.pos, built once for all rounds.
+class PointIndex;
+Graph reweighted(const Graph& base, const PointIndex& base_index, const std::vector<Bsg>& refined,
+                 double strength, double max_new_edge);
 
 }  // namespace ramus::bsg
