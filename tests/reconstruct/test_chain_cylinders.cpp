@@ -61,7 +61,7 @@ double one_station_limbs(bool chain_cylinders) {
   scanner::ScanOptions so;
   so.from = scanner::stations_around(truth, 1);
   so.noise = 0.005;
-  so.density = 1500;
+  so.density = 6000;
   const scanner::ScanResult scan = scanner::scan_skeleton(truth, so);
   std::vector<Eigen::Vector3d> points;
   for (const Vec3f& p : scan.cloud.positions) {
@@ -69,7 +69,10 @@ double one_station_limbs(bool chain_cylinders) {
     points.emplace_back(q.x, q.y, q.z);
   }
   Skeleton moved = truth;
-  for (SkeletonNode& n : moved.nodes) n.position.y -= n.radius, n.radius = 0.01;
+  // Twig-sized hints (above the half spacing below which nothing is fitted): a slab may then
+  // not fit a circle above 6 x max(hint, 2 spacings) = 15 cm, so the trunk and the thick
+  // limbs depend on the chain cylinders, as the BSG's spur chains along thick limbs do.
+  for (SkeletonNode& n : moved.nodes) n.position.y -= n.radius, n.radius = 0.008;
   bsg::CentreLineParams p;
   p.spacing = 1 / std::sqrt(so.density);
   p.chain_cylinders = chain_cylinders;
