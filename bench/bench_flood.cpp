@@ -81,10 +81,10 @@ void time_scan(const std::string& path) {
   const ReconstructResult f = flood::flood_reconstruct(cloud);
   std::printf(
       "%s points=%zu bsg: trees=%zu nodes=%zu total=%.3fs | flood: trees=%zu nodes=%zu "
-      "bases=%.3f voxels=%.3f flood=%.3f total=%.3fs | speed-up %.1fx\n",
+      "bases=%.3f voxels=%.3f flood=%.3f centre lines=%.3f total=%.3fs | speed-up %.1fx\n",
       path.c_str(), cloud.size(), b.trees.size(), b.counts.skeleton_nodes, b.timings.total,
       f.trees.size(), f.counts.skeleton_nodes, f.timings.bases, f.timings.graph, f.timings.forest,
-      f.timings.total, b.timings.total / std::max(f.timings.total, 1e-9));
+      f.timings.inflate, f.timings.total, b.timings.total / std::max(f.timings.total, 1e-9));
 }
 
 std::size_t bark_triangles(const Skeleton& s) {

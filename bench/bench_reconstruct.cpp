@@ -8,8 +8,8 @@
 // leaf cards too), --opt name=value (a ReconstructOptions field, for parameter sweeps: voxel,
 // voxel_spacings, voxel_floor, neighbours, max_gap, contraction, iterations, overlap, min_branch,
 // min_cylinder, ground_band, terrain), --stations N (only N stations instead of 1 and 3), --dump
-// PREFIX (write the truth and the reconstruction as skeleton JSON). Prints one line per run and the
-// peak resident memory at the end.
+// PREFIX (write the truth and the reconstruction as skeleton JSON, the scan as .xyz). Prints one
+// line per run and the peak resident memory at the end.
 #include <sys/resource.h>
 
 #include <chrono>
@@ -95,13 +95,18 @@ void accuracy(const std::string& path, const scanner::HarnessCase& base) {
   for (int stations : g_stations) {
     scanner::HarnessCase c = base;
     c.stations = stations;
-    const scanner::HarnessResult r = scanner::run_harness(t, c, g_options);
+    PointCloud scanned;  // kept for --dump
+    const scanner::HarnessResult r = scanner::run_harness(t, c, [&](const PointCloud& cloud) {
+      if (!g_dump.empty()) scanned = cloud;
+      return reconstruct(cloud, g_options);
+    });
     const SkeletonComparison& a = r.at_radius;
     if (!g_dump.empty()) {
       const std::string stem =
           g_dump + std::filesystem::path(path).stem().string() + "-" + std::to_string(stations);
       write_skeleton_json(stem + ".truth.json", t);
       if (!r.reconstructed.empty()) write_skeleton_json(stem + ".rec.json", r.reconstructed[0]);
+      write_point_cloud_xyz(stem + ".scan.xyz", scanned);
     }
     std::printf(
         "%s stations=%d points=%zu trees=%zu precision(2r)=%.3f recall(2r)=%.3f "

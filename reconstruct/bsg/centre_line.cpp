@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "reconstruct/bsg/bsg.h"
+#include "reconstruct/bsg/chain_cylinders.h"
 #include "reconstruct/bsg/circle_fit.h"
 #include "reconstruct/bsg/kdtree.h"
 
@@ -154,6 +155,19 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
   const double noise = p.noise > 0 ? p.noise : 0.25 * p.spacing;
   const std::vector<Eigen::Vector3d> original = pos;
   std::vector<SlabFit> fits(n);
+  // A fork whose slab could not be fitted (it cuts the stem and its branches at once) lies on
+  // the stem's axis: the line through the two fitted nodes below it, when it is near that line.
+  auto repair_forks = [&] {
+    for (std::uint32_t v : order) {
+      if (!fork[v] || fits[v].ok) continue;
+      const std::uint32_t u = parent[v];
+      if (u >= n || !fits[u].ok || parent[u] >= n || !fits[parent[u]].ok) continue;
+      const Eigen::Vector3d a = pos[parent[u]], d = pos[u] - a;
+      if (!(d.squaredNorm() > 0)) continue;
+      const Eigen::Vector3d on = a + d * ((original[v] - a).dot(d) / d.squaredNorm());
+      if ((on - original[v]).norm() <= 1.5 * fits[u].radius + p.spacing) pos[v] = on;
+    }
+  };
   for (int pass = 0; pass < std::max(1, p.passes); ++pass) {
     // Every node is fitted from the positions of the previous pass (Jacobi: the result does not
     // depend on the order or the thread count).
@@ -176,16 +190,20 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
       ancestor[v] = ra;
     }
     for (std::size_t v = 0; v < n; ++v) pos[v] = fits[v].ok ? fits[v].axis_point : original[v];
-    // A fork whose slab could not be fitted (it cuts the stem and its branches at once) lies on
-    // the stem's axis: the line through the two fitted nodes below it, when it is near that line.
-    for (std::uint32_t v : order) {
-      if (!fork[v] || fits[v].ok) continue;
-      const std::uint32_t u = parent[v];
-      if (u >= n || !fits[u].ok || parent[u] >= n || !fits[parent[u]].ok) continue;
-      const Eigen::Vector3d a = pos[parent[u]], d = pos[u] - a;
-      if (!(d.squaredNorm() > 0)) continue;
-      const Eigen::Vector3d on = a + d * ((original[v] - a).dot(d) / d.squaredNorm());
-      if ((on - original[v]).norm() <= 1.5 * fits[u].radius + p.spacing) pos[v] = on;
+    repair_forks();
+  }
+  // Chains whose cross-sections failed: cylinders along them (chain_cylinders.h).
+  if (p.chain_cylinders) {
+    std::vector<std::uint8_t> ok(n);
+    std::vector<double> r(n);
+    for (std::size_t v = 0; v < n; ++v) ok[v] = fits[v].ok, r[v] = fits[v].radius;
+    if (fit_chain_cylinders(pos, parent, radius, ok, r, index, samples, sample_weight, p, noise) >
+        0) {
+      for (std::size_t v = 0; v < n; ++v) {
+        if (ok[v] && !fits[v].ok)
+          fits[v].ok = true, fits[v].axis_point = pos[v], fits[v].radius = r[v];
+      }
+      repair_forks();
     }
   }
   for (std::size_t v = 0; v < n; ++v) {

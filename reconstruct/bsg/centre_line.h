@@ -6,7 +6,9 @@
 // (circle_fit.h, as TreeQSM and AdTree fit cylinders) gives the axis point and the radius, which
 // replace the node's position and radius where the fit is good. Elsewhere (too few points, an arc
 // too short, a radius implausible against the branch's) the node stays and keeps the radius the
-// caller gave it (Livny 4.3's allometric one). The topology is never changed.
+// caller gave it (Livny 4.3's allometric one); where a chain of such nodes lies on a branch, a
+// cylinder fitted along the chain or the segment between its fitted neighbours places them
+// (chain_cylinders.h). The topology is never changed.
 // docs/reconstruction.md, "Centre lines".
 #pragma once
 
@@ -40,6 +42,8 @@ struct CentreLineParams {
   // A node moves at most this many fitted radii (plus two spacings): it lies on the bark or
   // near it, and a farther circle is another branch's.
   double max_shift = 1.75;
+  // Chains with unfitted nodes get cylinders fitted along them (chain_cylinders.h).
+  bool chain_cylinders = true;
   int passes = 2;             // refits from the moved nodes (better directions, centred balls)
   int max_slab_points = 300;  // slabs with more points are thinned evenly before the fit
 };

@@ -12,29 +12,13 @@ namespace {
 
 double weight_of(const std::vector<double>& w, std::size_t i) { return w.empty() ? 1.0 : w[i]; }
 
-// 1.4826 x the median of |e|: the standard deviation of Gaussian residuals. (Unweighted: the
-// weights are point counts of near-uniform voxels, and nth_element keeps the fits cheap.)
-double robust_scale(const std::vector<double>& e, const std::vector<double>&) {
-  if (e.empty()) return 0.0;
-  std::vector<double> a(e.size());
-  for (std::size_t i = 0; i < e.size(); ++i) a[i] = std::abs(e[i]);
-  const auto mid = a.begin() + std::ptrdiff_t(a.size() / 2);
-  std::nth_element(a.begin(), mid, a.end());
-  return 1.4826 * *mid;
-}
-
-// 2 pi minus the widest angular gap between the given points seen from the centre.
 double arc_coverage(const std::vector<Eigen::Vector2d>& pts, const std::vector<char>& use,
                     const Eigen::Vector2d& c) {
   std::vector<double> ang;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (use[i]) ang.push_back(std::atan2(pts[i].y() - c.y(), pts[i].x() - c.x()));
   }
-  if (ang.size() < 2) return 0.0;
-  std::sort(ang.begin(), ang.end());
-  double gap = ang.front() + 2 * M_PI - ang.back();
-  for (std::size_t i = 1; i < ang.size(); ++i) gap = std::max(gap, ang[i] - ang[i - 1]);
-  return 2 * M_PI - gap;
+  return angular_coverage(std::move(ang));
 }
 
 // The circle through three points (invalid when they are nearly collinear).
@@ -65,6 +49,25 @@ double consensus(const std::vector<Eigen::Vector2d>& pts, const std::vector<doub
 }
 
 }  // namespace
+
+double robust_scale(const std::vector<double>& e) {
+  // Unweighted: the weights are point counts of near-uniform voxels, and nth_element keeps the
+  // fits cheap.
+  if (e.empty()) return 0.0;
+  std::vector<double> a(e.size());
+  for (std::size_t i = 0; i < e.size(); ++i) a[i] = std::abs(e[i]);
+  const auto mid = a.begin() + std::ptrdiff_t(a.size() / 2);
+  std::nth_element(a.begin(), mid, a.end());
+  return 1.4826 * *mid;
+}
+
+double angular_coverage(std::vector<double> ang) {
+  if (ang.size() < 2) return 0.0;
+  std::sort(ang.begin(), ang.end());
+  double gap = ang.front() + 2 * M_PI - ang.back();
+  for (std::size_t i = 1; i < ang.size(); ++i) gap = std::max(gap, ang[i] - ang[i - 1]);
+  return 2 * M_PI - gap;
+}
 
 CircleFit taubin_circle(const std::vector<Eigen::Vector2d>& pts,
                         const std::vector<double>& weights) {
@@ -149,14 +152,14 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
   double r = f.radius, scale = 0;
   // The scale comes from the points near the current circle (within 4 tau), so the points of
   // another branch do not inflate it and turn themselves into inliers.
-  std::vector<double> near_e, near_w;
+  std::vector<double> near_e;
   auto residuals = [&] {
-    near_e.clear(), near_w.clear();
+    near_e.clear();
     for (std::size_t i = 0; i < n; ++i) {
       e[i] = (pts[i] - c).norm() - r;
-      if (std::abs(e[i]) < 4 * tau) near_e.push_back(e[i]), near_w.push_back(weight_of(weights, i));
+      if (std::abs(e[i]) < 4 * tau) near_e.push_back(e[i]);
     }
-    scale = std::max(near_e.empty() ? tau : robust_scale(near_e, near_w), noise);
+    scale = std::max(near_e.empty() ? tau : robust_scale(near_e), noise);
   };
   residuals();
   for (int it = 0; it < iterations; ++it) {
@@ -194,7 +197,6 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
   // Inliers: within 2.5 robust scales of the circle (Tukey's weight is tiny beyond that).
   std::vector<char> in(n, 0);
   std::vector<double> inlier_e;
-  std::vector<double> inlier_w;
   double win = 0, wall = 0;
   for (std::size_t i = 0; i < n; ++i) {
     wall += weight_of(weights, i);
@@ -202,12 +204,11 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
       in[i] = 1;
       win += weight_of(weights, i);
       inlier_e.push_back(e[i]);
-      inlier_w.push_back(weight_of(weights, i));
     }
   }
   f.centre = c;
   f.radius = std::abs(r);
-  f.residual = inlier_e.empty() ? scale : robust_scale(inlier_e, inlier_w);
+  f.residual = inlier_e.empty() ? scale : robust_scale(inlier_e);
   f.coverage = arc_coverage(pts, in, c);
   f.inlier_fraction = wall > 0 ? win / wall : 0;
   f.valid = std::isfinite(f.radius) && c.allFinite() && f.radius > 0;

@@ -24,6 +24,12 @@ struct CircleFit {
   bool valid = false;          // finite and non-degenerate
 };
 
+// 1.4826 x the median of |e|: the standard deviation of Gaussian residuals, robustly.
+double robust_scale(const std::vector<double>& e);
+
+// 2 pi minus the widest gap between the given angles (radians, any order): the arc they cover.
+double angular_coverage(std::vector<double> angles);
+
 // Taubin's algebraic circle through weighted points (weights may be empty: all 1).
 CircleFit taubin_circle(const std::vector<Eigen::Vector2d>& pts,
                         const std::vector<double>& weights);

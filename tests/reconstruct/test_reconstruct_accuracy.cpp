@@ -178,11 +178,13 @@ TEST_CASE("reconstruct accuracy: thick tree, three stations: nodes on the axes",
   CHECK(b.at_radius.centre_error_median > 2 * a.centre_error_median);
 }
 
-// One station sees half of every stem. Measured: precision / recall within 2 x radius 0.968 /
-// 0.802 (the occluded limbs are missing), median error / radius over the found samples 0.433 /
-// 0.135 / 0.066 in the classes 5-10 / 10-20 / 20-40 cm (0.60 / 0.28 / 0.066 over all samples).
-// The trunk meets the target; the limbs do not yet (docs/reconstruction.md, Centre lines).
-TEST_CASE("reconstruct accuracy: thick tree, one station: the trunk on its axis", "[accuracy]") {
+// One station sees half of every stem. Measured: precision / recall within 2 x radius 0.964 /
+// 0.798 (the occluded limbs are missing), median error / radius 0.121 / 0.194 / 0.061 in the
+// classes 5-10 / 10-20 / 20-40 cm over all samples, 0.072 / 0.086 / 0.061 over the found ones.
+// Cross-sections alone left the limbs at 0.60 / 0.28 (found 0.43 / 0.135): the chain cylinders
+// and bridges (chain_cylinders.h) put them on their axes.
+TEST_CASE("reconstruct accuracy: thick tree, one station: trunk and limbs on their axes",
+          "[accuracy]") {
   const Skeleton truth = test::thick_tree(5, 8.0, 0.3);
   scanner::HarnessCase c;
   c.stations = 1;
@@ -192,6 +194,8 @@ TEST_CASE("reconstruct accuracy: thick tree, one station: the trunk on its axis"
   REQUIRE(r.trees == 1);
   CHECK(a.precision >= 0.95);
   CHECK(a.recall >= 0.75);
+  check_centre_classes(a, 0.05, 0.15, true);
   check_centre_classes(a, 0.2, 0.15, false);
-  check_centre_classes(a, 0.1, 0.25, true);
+  // Over all samples the 10-20 cm class counts a limb hidden behind the trunk.
+  check_centre_classes(a, 0.05, 0.25, false);
 }

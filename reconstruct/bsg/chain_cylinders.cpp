@@ -1,0 +1,240 @@
+#include "reconstruct/bsg/chain_cylinders.h"
+
+#include <tbb/parallel_for.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "reconstruct/bsg/bsg.h"
+#include "reconstruct/bsg/cylinder_fit.h"
+
+namespace ramus::bsg {
+
+namespace {
+
+struct Piece {
+  std::vector<std::uint32_t> nodes;  // along the chain
+  double radius = 0;                 // the chain's radius estimate
+};
+
+double median(std::vector<double> a) {
+  if (a.empty()) return 0;
+  const auto mid = a.begin() + std::ptrdiff_t(a.size() / 2);
+  std::nth_element(a.begin(), mid, a.end());
+  return *mid;
+}
+
+// Chains (from a fork's child to the next fork or tip, the fork included as the last node) cut
+// into pieces of about `max(3 r, 6 spacings)`, r the chain's median radius (fitted, else hint).
+std::vector<Piece> pieces_of_chains(const std::vector<Eigen::Vector3d>& pos,
+                                    const std::vector<std::uint32_t>& parent,
+                                    const std::vector<double>& hint,
+                                    const std::vector<std::uint8_t>& fitted,
+                                    const std::vector<double>& fitted_radius, double spacing,
+                                    double thin) {
+  const std::size_t n = pos.size();
+  std::vector<int> children(n, 0);
+  std::vector<std::uint32_t> only_child(n, kNone);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (parent[v] < n) ++children[parent[v]], only_child[parent[v]] = v;
+  }
+  std::vector<Piece> out;
+  std::vector<std::uint32_t> chain;
+  for (std::uint32_t s = 0; s < n; ++s) {
+    if (parent[s] < n && children[parent[s]] == 1) continue;  // not a chain start
+    chain.clear();
+    for (std::uint32_t v = s;; v = only_child[v]) {
+      chain.push_back(v);
+      if (children[v] != 1) break;
+    }
+    std::vector<double> radii;
+    bool any_unfitted = false;
+    for (std::uint32_t v : chain) {
+      radii.push_back(fitted[v] ? fitted_radius[v] : hint[v]);
+      any_unfitted |= !fitted[v] && children[v] < 2 && hint[v] >= thin;
+    }
+    if (!any_unfitted) continue;
+    const double r = std::max(median(radii), 2 * spacing);
+    const double length = std::max(3 * r, 6 * spacing);
+    Piece piece;
+    piece.radius = r;
+    double along = 0;
+    for (std::size_t k = 0; k < chain.size(); ++k) {
+      if (k > 0) along += (pos[chain[k]] - pos[chain[k - 1]]).norm();
+      piece.nodes.push_back(chain[k]);
+      if (along >= length && k + 1 < chain.size()) {
+        out.push_back(piece);
+        piece.nodes.clear();
+        along = 0;
+      }
+    }
+    if (!piece.nodes.empty()) out.push_back(piece);
+  }
+  return out;
+}
+
+// A node between two fitted nodes (at most `steps` nodes away on either side, downwards along
+// the heaviest child) that neither its cross-section nor a cylinder placed lies on the segment
+// between them: the BSG's nodes on a thick limb are a few radii apart, and one node left on the
+// bark (often a fork where a spur leaves) makes a detour of a radius across the limb.
+std::size_t bridge_unfitted(std::vector<Eigen::Vector3d>& pos,
+                            const std::vector<std::uint32_t>& parent,
+                            const std::vector<double>& hint, std::vector<std::uint8_t>& fitted,
+                            std::vector<double>& fitted_radius, double spacing, double thin,
+                            int steps = 4) {
+  const std::size_t n = pos.size();
+  std::vector<std::vector<std::uint32_t>> ch(n);
+  std::vector<std::uint32_t> order;
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (parent[v] < n) {
+      ch[parent[v]].push_back(v);
+    } else {
+      order.push_back(v);
+    }
+  }
+  for (std::size_t i = 0; i < order.size(); ++i) {
+    for (std::uint32_t c : ch[order[i]]) order.push_back(c);
+  }
+  std::vector<std::size_t> size(n, 1);
+  for (std::size_t i = order.size(); i-- > 0;) {
+    if (parent[order[i]] < n) size[parent[order[i]]] += size[order[i]];
+  }
+  auto heaviest = [&](std::uint32_t v) {
+    std::uint32_t best = kNone;
+    for (std::uint32_t c : ch[v]) {
+      if (best == kNone || size[c] > size[best]) best = c;
+    }
+    return best;
+  };
+  std::vector<std::uint32_t> moved;
+  std::vector<Eigen::Vector3d> to;
+  std::vector<double> radius;
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (fitted[v] || ch[v].empty() || parent[v] >= n || hint[v] < thin) continue;
+    std::uint32_t a = parent[v], b = heaviest(v);
+    for (int k = 0; k < steps && !fitted[a] && parent[a] < n; ++k) a = parent[a];
+    for (int k = 0; k < steps && !fitted[b] && !ch[b].empty(); ++k) b = heaviest(b);
+    if (!fitted[a] || !fitted[b]) continue;
+    const Eigen::Vector3d ab = pos[b] - pos[a];
+    const double l2 = ab.squaredNorm();
+    if (!(l2 > 0)) continue;
+    const double t = std::clamp((pos[v] - pos[a]).dot(ab) / l2, 0.0, 1.0);
+    const Eigen::Vector3d on = pos[a] + t * ab;
+    const double r = fitted_radius[a] + t * (fitted_radius[b] - fitted_radius[a]);
+    if ((on - pos[v]).norm() > 1.5 * r + 2 * spacing) continue;
+    moved.push_back(v), to.push_back(on), radius.push_back(r);
+  }
+  for (std::size_t k = 0; k < moved.size(); ++k) {
+    pos[moved[k]] = to[k], fitted[moved[k]] = 1, fitted_radius[moved[k]] = radius[k];
+  }
+  return moved.size();
+}
+
+}  // namespace
+
+std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
+                                const std::vector<std::uint32_t>& parent,
+                                const std::vector<double>& hint, std::vector<std::uint8_t>& fitted,
+                                std::vector<double>& fitted_radius, const PointIndex& index,
+                                const std::vector<Eigen::Vector3d>& samples,
+                                const std::vector<double>& weight, const CentreLineParams& p,
+                                double noise) {
+  const std::size_t n = pos.size();
+  std::vector<int> children(n, 0);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (parent[v] < n) ++children[parent[v]];
+  }
+  // Twigs are left alone, as by the cross-sections (CentreLineParams::min_hint_spacings): a twig's
+  // piece gathers its parent's bark and would move onto the parent's axis.
+  const double thin = p.min_hint_spacings * p.spacing;
+  // No branch is thicker than the thickest cross-section (the trunk's) by much.
+  double r_max = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (fitted[v]) r_max = std::max(r_max, fitted_radius[v]);
+  }
+  const std::vector<Piece> pieces =
+      pieces_of_chains(pos, parent, hint, fitted, fitted_radius, p.spacing, thin);
+  std::vector<std::uint8_t> placed(n, 0);
+  std::vector<double> placed_radius(n, 0.0);
+  std::vector<Eigen::Vector3d> placed_pos(n);
+  tbb::parallel_for(std::size_t(0), pieces.size(), [&](std::size_t k) {
+    const Piece& piece = pieces[k];
+    const std::uint32_t first = piece.nodes.front(), last = piece.nodes.back();
+    // The start line: through the piece's middle, from the node before it to its last node.
+    const std::uint32_t before = parent[first] < n ? parent[first] : first;
+    Eigen::Vector3d d0 = pos[last] - pos[before];
+    if (!(d0.norm() > 0)) return;
+    d0.normalize();
+    Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+    for (std::uint32_t v : piece.nodes) centre += pos[v];
+    centre /= double(piece.nodes.size());
+    const double half_length = 0.5 * (pos[last] - pos[before]).norm();
+    double r0 = piece.radius;
+    std::vector<std::uint32_t> near;
+    std::vector<Eigen::Vector3d> pts;
+    std::vector<double> w;
+    for (int attempt = 0; attempt < 6; ++attempt) {
+      const double reach = std::max(2.5 * r0, 5 * p.spacing);
+      const double span = std::max({half_length, r0, 3 * p.spacing});
+      near.clear();
+      index.within(centre, std::sqrt(reach * reach + span * span), near);
+      pts.clear(), w.clear();
+      for (std::uint32_t i : near) {
+        const Eigen::Vector3d q = samples[i] - centre;
+        const double t = q.dot(d0);
+        if (std::abs(t) > span || (q - t * d0).squaredNorm() > reach * reach) continue;
+        pts.push_back(samples[i]);
+        w.push_back(weight.empty() ? 1.0 : weight[i]);
+      }
+      if (pts.size() < 12) return;
+      const std::size_t cap = 4 * std::size_t(p.max_slab_points) / 3;
+      if (pts.size() > cap) {
+        const std::size_t stride = (pts.size() + cap - 1) / cap;
+        std::size_t m = 0;
+        for (std::size_t i = 0; i < pts.size(); i += stride) pts[m] = pts[i], w[m] = w[i], ++m;
+        pts.resize(m), w.resize(m);
+      }
+      const CylinderFit f = fit_cylinder(pts, w, centre, d0, span, noise);
+      if (!f.valid) return;
+      const Eigen::Vector3d off = f.point - centre;
+      const double shift = (off - off.dot(f.direction) * f.direction).norm();
+      if (shift + f.radius > 0.9 * reach && attempt < 5) {
+        r0 = std::min(2 * r0, 1.3 * std::max(f.radius, shift));
+        // A gathering wider than the trunk only collects other branches.
+        if (r_max > 0 && r0 > p.max_growth * r_max + p.spacing) return;
+        continue;
+      }
+      // A cylinder much thicker than the chain's estimate is either the limb under a spur chain
+      // on its bark (the chain runs along it) or the parent of a twig (the twig leaves it at an
+      // angle): only the first is accepted (15 degrees: 40 let the bundled broadleaf's twigs
+      // onto their parents, precision within 2 x radius 0.966 instead of 0.978).
+      const double max_angle = f.radius > 1.5 * piece.radius ? 15.0 : 40.0;
+      const bool good = f.coverage >= p.min_coverage && f.inlier_fraction >= p.min_inliers &&
+                        f.residual <= p.max_residual * f.radius + noise && f.radius >= p.spacing &&
+                        f.axial_fill >= 0.6 &&
+                        std::abs(f.direction.dot(d0)) >= std::cos(max_angle * M_PI / 180) &&
+                        shift + f.radius <= reach &&
+                        (r_max <= 0 || f.radius <= p.max_growth * r_max + p.spacing);
+      if (!good) return;
+      for (std::uint32_t v : piece.nodes) {
+        if (fitted[v] || children[v] >= 2 || hint[v] < thin) continue;
+        const Eigen::Vector3d x = pos[v];
+        const Eigen::Vector3d a = f.point + (x - f.point).dot(f.direction) * f.direction;
+        // The piece's nodes lie on the bark of the branch they stand for or inside it; a node
+        // outside the cylinder belongs to another branch (a limb's node beside the trunk).
+        if ((x - a).norm() > 1.15 * f.radius + 2 * p.spacing) continue;
+        placed[v] = 1, placed_pos[v] = a, placed_radius[v] = f.radius;
+      }
+      return;
+    }
+  });
+  std::size_t count = 0;
+  for (std::size_t v = 0; v < n; ++v) {
+    if (!placed[v]) continue;
+    pos[v] = placed_pos[v], fitted[v] = 1, fitted_radius[v] = placed_radius[v];
+    ++count;
+  }
+  return count + bridge_unfitted(pos, parent, hint, fitted, fitted_radius, p.spacing, thin);
+}
+
+}  // namespace ramus::bsg

@@ -1,0 +1,29 @@
+// Centre lines along chains: where the cross-section of a node cannot be fitted (a one-sided scan
+// of a limb whose slab sees a short, flat arc; a spur chain on the bark of a thick limb whose
+// radius hint is a twig's; a skeleton direction that cuts the branch obliquely), the chain the
+// node lies on is cut into pieces of a few radii and a cylinder with a free axis direction is
+// fitted to all points around each piece (cylinder_fit.h; TreeQSM's segments and cylinders,
+// Raumonen et al. 2013, section 2.3). The piece's unfitted nodes move onto the accepted axis.
+// docs/reconstruction.md, "Centre lines".
+#pragma once
+
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "reconstruct/bsg/centre_line.h"
+#include "reconstruct/bsg/kdtree.h"
+
+namespace ramus::bsg {
+
+// pos: current positions (the slab fits applied); fitted / fitted_radius: the slab fits, which
+// are kept. Nodes placed here get fitted = 1 and their cylinder's radius. Returns how many.
+std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
+                                const std::vector<std::uint32_t>& parent,
+                                const std::vector<double>& hint, std::vector<std::uint8_t>& fitted,
+                                std::vector<double>& fitted_radius, const PointIndex& index,
+                                const std::vector<Eigen::Vector3d>& samples,
+                                const std::vector<double>& weight, const CentreLineParams& p,
+                                double noise);
+
+}  // namespace ramus::bsg
