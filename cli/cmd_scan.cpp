@@ -1,4 +1,4 @@
-// ramus scan FILE -o OUT.ply|.xyz|.las [--from x,y,z]... [--noise S] [--density D] [--max-range R]
+// ramus scan FILE -o OUT.ply|.xyz|.las|.laz [--from x,y,z]... [--noise S] [--density D] [--max-range R]
 //                 [--leaves] [--truth OUT.json] [--seed S] [-n N] [-D name=value]...
 // ramus scan FILE... --forest N|--layout L.json --area WxH -o OUT [--station-spacing D] ...
 // Grows the grammar, meshes its tree and ray casts it from the scanner stations: a simulated
@@ -43,8 +43,8 @@ void write_cloud(const std::string& path, const PointCloud& cloud) {
   const std::string ext = std::filesystem::path(path).extension().string();
   if (ext == ".ply") {
     write_point_cloud_ply(path, cloud);
-  } else if (ext == ".las") {
-    write_point_cloud_las(path, cloud);
+  } else if (ext == ".las" || ext == ".laz") {
+    write_point_cloud_las(path, cloud);  // a .laz name writes the records compressed
   } else {
     write_point_cloud_xyz(path, cloud);
   }
@@ -210,14 +210,14 @@ void add_scan(CLI::App& app, const GlobalOptions& global, std::function<int()>& 
   sub->add_option("more", args->more_grammars,
                   "more grammars of a --forest plot (tree i grows from grammar i mod count)");
   output_path(
-      sub->add_option("-o,--output", args->output, "output point cloud: .ply, .xyz or .las"))
+      sub->add_option("-o,--output", args->output, "output point cloud: .ply, .xyz, .las or .laz"))
       ->required()
       ->check(CLI::Validator(
           [](const std::string& p) -> std::string {
             const std::string e = std::filesystem::path(p).extension().string();
-            return e == ".ply" || e == ".xyz" || e == ".las"
+            return e == ".ply" || e == ".xyz" || e == ".las" || e == ".laz"
                        ? ""
-                       : "the output must end in .ply, .xyz or .las";
+                       : "the output must end in .ply, .xyz, .las or .laz";
           },
           "FILE", "point cloud file"));
   sub->add_option("--from", args->from,

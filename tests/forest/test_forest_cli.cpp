@@ -115,3 +115,19 @@ TEST_CASE("forest commands refuse what does not apply", "[forest][cli]") {
   r = run_ramus({"merge", dir.string(), "-o", (dir / "f.json").string()});
   CHECK(r.status == 1);
 }
+
+TEST_CASE("a simulated scan written as .laz reads back to the points of its .las", "[forest][cli]") {
+  const fs::path dir = scratch("laz");
+  for (const char* name : {"t.las", "t.laz"}) {
+    const CliResult r = run_ramus({"scan", kTrees + "conifer.ramus", "--angular-step", "1", "-o",
+                                   (dir / name).string(), "--seed", "2"});
+    INFO(r.out);
+    REQUIRE(r.status == 0);
+  }
+  const ramus::PointCloud las = ramus::read_point_cloud((dir / "t.las").string());
+  const ramus::PointCloud laz = ramus::read_point_cloud((dir / "t.laz").string());
+  REQUIRE(las.size() > 1000);
+  REQUIRE(laz.size() == las.size());
+  for (std::size_t i = 0; i < las.size(); i += 97) CHECK(laz.world(i) == las.world(i));
+  CHECK(fs::file_size(dir / "t.laz") < fs::file_size(dir / "t.las"));
+}
