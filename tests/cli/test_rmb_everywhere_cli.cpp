@@ -60,7 +60,8 @@ TEST_CASE("rmb: build, scan and compare read an .rmb; -D and --system are refuse
   const std::string src =
       std::string(RAMUS_SOURCE_DIR) + "/examples/abop/fig5_5_cordate_leaf.ramus";
   const fs::path dir = temp_dir();
-  const std::string bin = (dir / "leaf.rmb").string();
+  // Named as its source: a mesh and its node are named after the input file's stem.
+  const std::string bin = (dir / "fig5_5_cordate_leaf.rmb").string();
   REQUIRE(ramus({"-q", "build", src, "--target", "binary", "-o", bin}).status == 0);
   // The same mesh from the binary as from the source.
   REQUIRE(ramus({"-q", "build", src, "-o", (dir / "a.glb").string()}).status == 0);
