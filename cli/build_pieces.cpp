@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <stdexcept>
 
 #include "backends/pieces/gltf_pieces.h"
@@ -34,6 +35,31 @@ double row_spacing(const pieces::PieceSet& set, const pieces::Tree& tree) {
     hi = std::max({hi, w.t.x, w.t.y});
   }
   return 1.2 * (hi - lo) + 4 * set.rim_radius;
+}
+
+// The skeleton a block without attach rules is fitted to: the lsystem its `skeleton` line names
+// (in the root file or an import), else the root file's first or --system. The program is
+// loaded and checked; only the lsystem block is lowered and grown. nullopt after printing the
+// diagnostics of an error in the grammar.
+std::optional<Skeleton> grow_named_skeleton(const Program& program, const GrowArgs& grow,
+                                            const std::string& block, SourceManager& sources,
+                                            DiagnosticSink& diags) {
+  GrowOptions fit_options = to_grow_options(grow);
+  const std::string named = pieces::pieces_skeleton_system(program, block);
+  if (!named.empty()) {
+    if (!grow.system.empty() && grow.system != named) {
+      throw UserError("--system " + grow.system + ": the pieces block is fitted to the lsystem '" +
+                      named + "' (its 'skeleton' setting)");
+    }
+    fit_options.system = named;
+  }
+  try {
+    return grow_checked(program, fit_options, sources, diags);
+  } catch (const GrowError& e) {
+    print_diagnostics(sources, diags);
+    if (!diags.has_errors()) throw UserError(e.what());
+    return std::nullopt;
+  }
 }
 
 }  // namespace
@@ -76,14 +102,17 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
     const std::string pe = std::filesystem::path(a.preview).extension().string();
     if (pe != ".png" && pe != ".svg") throw UserError("--preview must end in .png or .svg");
   }
-  if (is_binary_grammar(grow.file)) {
-    throw UserError("--target pieces reads the pieces block from the grammar's source; " +
-                    grow.file + " is a compiled binary grammar (build pieces from the .ramus)");
-  }
+  // An .rmb holds the pieces blocks with their numbers folded (-D is refused) and the lsystem a
+  // block without attach rules is fitted to; the source is loaded and checked.
+  const bool binary = is_binary_grammar(grow.file);
   const GrowOptions grow_options = to_grow_options(grow);
   SourceManager sources;
   DiagnosticSink diags;
-  const Program program = load_program(grow.file, sources, diags);
+  pieces::LowerPiecesOptions lo;
+  lo.block = a.block;
+  lo.defines = grow_options.defines;
+  const Program program = binary ? load_binary_pieces(grow, sources, diags, lo.mesh_files)
+                                 : load_program(grow.file, sources, diags);
   CheckOptions check_options;
   check_options.defines = grow_options.defines;
   if (!diags.has_errors()) check_program(program, sources, diags, check_options);
@@ -91,9 +120,6 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
     print_diagnostics(sources, diags);
     return 1;
   }
-  pieces::LowerPiecesOptions lo;
-  lo.block = a.block;
-  lo.defines = grow_options.defines;
   const std::uint64_t seed = grow.seed.value_or(1);
   pieces::PieceSet set;
   pieces::Tree tree;
@@ -104,28 +130,12 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
       return 1;
     }
     if (pieces::pieces_block_fits_skeleton(program, a.block)) {
-      // The program is loaded and checked above; only the lsystem block is lowered and grown.
-      Skeleton skeleton;
-      GrowOptions fit_options = grow_options;
-      const std::string named = pieces::pieces_skeleton_system(program, a.block);
-      if (!named.empty()) {
-        if (!grow.system.empty() && grow.system != named) {
-          throw UserError("--system " + grow.system +
-                          ": the pieces block is fitted to the lsystem '" + named +
-                          "' (its 'skeleton' setting)");
-        }
-        fit_options.system = named;
-      }
-      try {
-        skeleton = grow_checked(program, fit_options, sources, diags);
-      } catch (const GrowError& e) {
-        print_diagnostics(sources, diags);
-        if (!diags.has_errors()) throw UserError(e.what());
-        return 1;
-      }
+      std::optional<Skeleton> skeleton =
+          binary ? grow_for_cli(grow) : grow_named_skeleton(program, grow, a.block, sources, diags);
+      if (!skeleton) return 1;
       pieces::FitOptions fo;
       fo.seed = seed;
-      tree = pieces::fit_skeleton(set, skeleton, fo);
+      tree = pieces::fit_skeleton(set, *skeleton, fo);
     } else {
       pieces::AssembleOptions ao;
       ao.seed = seed;

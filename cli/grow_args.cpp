@@ -7,6 +7,7 @@
 #include "cli/read_file.h"
 #include "compiler/pipeline.h"
 #include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_decompile.h"
 
 namespace ramus::cli {
 
@@ -31,13 +32,17 @@ std::optional<Result> run_reporting(const GrowArgs& a, const Step& step) {
   }
 }
 
-// The lsystem of an .rmb as the runtime loads it (runtime/ramus_runtime.cpp): decoded, with the
-// seed override in its settings, so the axiom's arguments and every pass draw from that seed.
-ir::Grammar load_binary_grammar(const GrowArgs& a) {
+void refuse_defines(const GrowArgs& a) {
   if (!a.defines.empty()) {
     throw UserError("-D/--define needs the grammar's source; " + a.file +
                     " is a compiled binary grammar (define the param when building it)");
   }
+}
+
+// The lsystem of an .rmb as the runtime loads it (runtime/ramus_runtime.cpp): decoded, with the
+// seed override in its settings, so the axiom's arguments and every pass draw from that seed.
+ir::Grammar load_binary_grammar(const GrowArgs& a) {
+  refuse_defines(a);
   ir::Grammar g;
   try {
     g = decode_rmb(read_file_bytes(a.file));
@@ -104,6 +109,29 @@ std::optional<Skeleton> grow_for_cli(const GrowArgs& a) {
     }
   }
   return run_reporting<Skeleton>(a, &grow_file);
+}
+
+Program load_binary_pieces(const GrowArgs& a, SourceManager& sources, DiagnosticSink& diags,
+                           std::vector<std::pair<std::string, std::string>>& mesh_files) {
+  refuse_defines(a);
+  RmbContents pieces_only;  // no lsystem and no voxels: the text holds the pieces blocks alone
+  try {
+    pieces_only.pieces = decode_rmb_contents(read_file_bytes(a.file)).pieces;
+  } catch (const RmbError& e) {
+    throw UserError(a.file + ": " + e.what());
+  }
+  if (pieces_only.pieces.empty()) throw UserError(a.file + " holds no pieces block");
+  std::string text;
+  try {
+    text = decompile(pieces_only);
+  } catch (const DecompileError& e) {
+    throw UserError(a.file + ": " + e.what());
+  }
+  mesh_files.clear();
+  for (RmbMeshFile& m : pieces_only.pieces.meshes) {
+    mesh_files.emplace_back(std::move(m.name), std::move(m.bytes));
+  }
+  return load_program_text(a.file, std::move(text), sources, diags);
 }
 
 void print_diagnostics(const SourceManager& sources, DiagnosticSink& diags) {

@@ -6,12 +6,14 @@
 #include <cstdint>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "cli/command.h"
 #include "compiler/grow.h"
 #include "compiler/ir.h"
 #include "core/skeleton.h"
+#include "grammar/loader.h"
 
 namespace ramus::cli {
 
@@ -45,6 +47,15 @@ std::optional<ir::Grammar> lower_for_cli(const GrowArgs& args);
 // the diagnostics to stderr and returns nullopt (the caller exits with 1); warnings are printed and
 // growing goes on. Derivation failures throw UserError.
 std::optional<Skeleton> grow_for_cli(const GrowArgs& args);
+
+// The `pieces` blocks an .rmb stores (section 10, formats/rmb/rmb_pieces.h) as the program that
+// `--target pieces` lowers: decompiled to text (formats/rmb/rmb_decompile.h) named after the .rmb,
+// so a mesh kept as a path (--mesh-paths) is found relative to the .rmb, as `ramus decompile`
+// writes it beside its text. The mesh files it embeds go to `mesh_files` (name, bytes), for
+// pieces::LowerPiecesOptions::mesh_files. UserError for -D (it needs the source), a damaged file
+// and a file without pieces blocks; parse errors (there are none in a verified file) go to diags.
+Program load_binary_pieces(const GrowArgs& args, SourceManager& sources, DiagnosticSink& diags,
+                           std::vector<std::pair<std::string, std::string>>& mesh_files);
 
 // Prints the sink's diagnostics (sorted, as text with source lines and carets) to stderr.
 void print_diagnostics(const SourceManager& sources, DiagnosticSink& diags);

@@ -148,8 +148,13 @@ class PiecesLowering {
       namespace fs = std::filesystem;
       fs::path file = *c.path;
       if (file.is_relative()) file = fs::path(sm_.name(p.span.file)).parent_path() / file;
+      const std::string* bytes = nullptr;
+      for (const auto& [held, contents] : opt_.mesh_files) {
+        if (held == *c.path) bytes = &contents;
+      }
       try {
-        d = draft_mesh_file(name, file.string());
+        d = draft_mesh_file(name, bytes ? sm_.name(p.span.file) + ": " + *c.path : file.string(),
+                            bytes);
       } catch (const PiecesError& e) {
         error(DiagCode::PieceArguments, c.span, e.what());
       }

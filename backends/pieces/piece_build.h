@@ -49,10 +49,15 @@ PieceDraft draft_fork(const std::string& name, const ForkParams& p);
 PieceDraft draft_trifurcation(const std::string& name, const TrifurcationParams& p);
 PieceDraft draft_attachment(const std::string& name, const AttachmentParams& p);
 
-// A piece from a glTF (.gltf/.glb) or OBJ file whose rims are named (docs/pieces.md).
-PieceDraft draft_mesh_file(const std::string& name, const std::string& path);
-PieceDraft draft_gltf_file(const std::string& name, const std::string& path);
-PieceDraft draft_obj_file(const std::string& name, const std::string& path);
+// A piece from a glTF (.gltf/.glb) or OBJ file whose rims are named (docs/pieces.md). With
+// `bytes`, the file's contents are those bytes (a mesh an .rmb embeds) and `path` only names it:
+// in errors, and by its extension the format.
+PieceDraft draft_mesh_file(const std::string& name, const std::string& path,
+                           const std::string* bytes = nullptr);
+PieceDraft draft_gltf_file(const std::string& name, const std::string& path,
+                           const std::string* bytes = nullptr);
+PieceDraft draft_obj_file(const std::string& name, const std::string& path,
+                          const std::string* bytes = nullptr);
 // Shared by both readers: the quad mesh plus vertex groups named rim:<name>, -> a draft
 // (checks every rim is a regular hexagon, derives building transforms, sets weights).
 struct RawRim {

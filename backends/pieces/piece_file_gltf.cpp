@@ -134,14 +134,37 @@ struct Reader {
 
 }  // namespace
 
-PieceDraft draft_gltf_file(const std::string& name, const std::string& path) {
+PieceDraft draft_gltf_file(const std::string& name, const std::string& path,
+                           const std::string* bytes) {
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   std::string err, warn;
   bool binary = path.size() >= 4 && (path.compare(path.size() - 4, 4, ".glb") == 0 ||
                                      path.compare(path.size() - 4, 4, ".GLB") == 0);
-  bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                   : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+  bool ok = false;
+  if (bytes) {
+    // An embedded file is self-contained (the .rmb encoder refuses a .gltf whose buffers or
+    // images are files): a damaged or crafted one that names a file reads nothing from disk.
+    tinygltf::FsCallbacks no_files{};
+    no_files.FileExists = [](const std::string&, void*) { return false; };
+    no_files.ExpandFilePath = [](const std::string& p, void*) { return p; };
+    no_files.ReadWholeFile = [](std::vector<unsigned char>*, std::string* e, const std::string& f,
+                                void*) {
+      if (e) *e += "an embedded glTF file cannot refer to the file " + f + "\n";
+      return false;
+    };
+    no_files.WriteWholeFile = [](std::string*, const std::string&,
+                                 const std::vector<unsigned char>&, void*) { return false; };
+    loader.SetFsCallbacks(no_files);
+    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                              reinterpret_cast<const unsigned char*>(bytes->data()),
+                                              static_cast<unsigned int>(bytes->size()), "")
+                : loader.LoadASCIIFromString(&model, &err, &warn, bytes->data(),
+                                             static_cast<unsigned int>(bytes->size()), "");
+  } else {
+    ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
+                : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+  }
   if (!ok)
     throw PiecesError(path + ": cannot read the glTF file" + (err.empty() ? "" : ": " + err));
   Reader r{model, path};

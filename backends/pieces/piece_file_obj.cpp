@@ -30,9 +30,17 @@ std::uint32_t obj_index(const std::string& token, std::size_t count, const std::
 
 }  // namespace
 
-PieceDraft draft_obj_file(const std::string& name, const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw PiecesError(path + ": cannot read the piece file");
+PieceDraft draft_obj_file(const std::string& name, const std::string& path,
+                          const std::string* bytes) {
+  std::ifstream file;
+  std::istringstream memory;
+  if (bytes) {
+    memory.str(*bytes);
+  } else {
+    file.open(path, std::ios::binary);
+    if (!file) throw PiecesError(path + ": cannot read the piece file");
+  }
+  std::istream& in = bytes ? static_cast<std::istream&>(memory) : file;
   std::vector<Vec3> positions;
   std::vector<std::array<std::uint32_t, 4>> quads;
   std::vector<RawRim> rims;

@@ -171,13 +171,14 @@ PieceDraft draft_from_raw(const std::string& name, const std::string& path,
   return d;
 }
 
-PieceDraft draft_mesh_file(const std::string& name, const std::string& path) {
+PieceDraft draft_mesh_file(const std::string& name, const std::string& path,
+                           const std::string* bytes) {
   std::string ext = path.substr(
       path.find_last_of('.') == std::string::npos ? path.size() : path.find_last_of('.'));
   std::transform(ext.begin(), ext.end(), ext.begin(),
                  [](unsigned char ch) { return std::tolower(ch); });
-  if (ext == ".obj") return draft_obj_file(name, path);
-  if (ext == ".gltf" || ext == ".glb") return draft_gltf_file(name, path);
+  if (ext == ".obj") return draft_obj_file(name, path, bytes);
+  if (ext == ".gltf" || ext == ".glb") return draft_gltf_file(name, path, bytes);
   throw PiecesError(path + ": a piece file is .gltf, .glb or .obj");
 }
 

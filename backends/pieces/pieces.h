@@ -125,6 +125,9 @@ struct LowerPiecesOptions {
   std::string block;  // the pieces block; empty: the first one of the root file
   std::vector<std::pair<std::string, double>> defines;  // -D name=value, params only
   std::vector<int> lod_segments{1, 2, 4};               // tessellation levels built per piece
+  // Mesh files held in memory, by the name a mesh("NAME") piece gives: the files an .rmb embeds
+  // (formats/rmb/rmb_pieces.h). Such a piece is read from these bytes, not from the disk.
+  std::vector<std::pair<std::string, std::string>> mesh_files;
 };
 
 // A problem outside the source (no such block, unreadable mesh file, a mesh without rims) or a
