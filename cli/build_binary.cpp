@@ -122,6 +122,18 @@ int build_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::st
     GrowArgs args = a;
     if (args.system.empty() && !program.files.empty()) {
       args.system = pieces::pieces_skeleton_system(program, "");
+      // A binary holds one lsystem: blocks fitted to different ones cannot all be stored, and
+      // reading the file back would fit them to the wrong tree.
+      for (const ast::Decl& d : program.files[0].decls) {
+        const auto* p = std::get_if<ast::Pieces>(&d);
+        if (!p) continue;
+        const std::string other = pieces::pieces_skeleton_system(program, p->name.name);
+        if (!other.empty() && other != args.system) {
+          throw UserError(a.file + ": pieces " + p->name.name + " takes its skeleton from " +
+                          other + ", another block from " + args.system +
+                          "; an .rmb holds one lsystem, so write one binary per skeleton");
+        }
+      }
     }
     lowered = lower_for_cli(args);
     if (!lowered) return 1;

@@ -166,3 +166,25 @@ TEST_CASE("rmb: pieces from an .rmb refuse what needs the source or is not store
   REQUIRE(build_pieces(grown, tmp.path / "c", {}, false) == 0);
   CHECK(slurp(tmp.path / "a" / "t.glb") != slurp(tmp.path / "c" / "t.glb"));
 }
+
+TEST_CASE("rmb: a file whose pieces blocks fit different lsystems is refused as one binary",
+          "[cli][rmb][pieces]") {
+  const std::string trees = std::string(RAMUS_SOURCE_DIR) + "/examples/trees/";
+  TempDir tmp;
+  const fs::path src = tmp.path / "two.ramus";
+  write_text(src, "import \"" + trees + "broadleaf.ramus\";\nimport \"" + trees +
+                      "conifer.ramus\";\n"
+                      "pieces a {\n  piece I = tube(length: 4, taper: 0.9);\n"
+                      "  piece Y = fork(angle: 30, taper: 0.8);\n  root I;\n"
+                      "  skeleton broadleaf;\n}\n"
+                      "pieces b {\n  piece I = tube(length: 4, taper: 0.9);\n"
+                      "  piece Y = fork(angle: 30, taper: 0.8);\n  root I;\n"
+                      "  skeleton conifer;\n}\n");
+  const fs::path out = tmp.path / "two.rmb";
+  const CliResult r =
+      run_ramus({"build", src.string(), "--target", "binary", "-o", out.string()});
+  INFO(r.out);
+  CHECK(r.status == 1);
+  CHECK(r.out.find("an .rmb holds one lsystem") != std::string::npos);
+  CHECK_FALSE(fs::exists(out));
+}
