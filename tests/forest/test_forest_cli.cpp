@@ -126,8 +126,8 @@ TEST_CASE("a simulated scan written as .laz reads back to the points of its .las
   }
   const ramus::PointCloud las = ramus::read_point_cloud((dir / "t.las").string());
   const ramus::PointCloud laz = ramus::read_point_cloud((dir / "t.laz").string());
-  REQUIRE(las.size() > 1000);
+  REQUIRE(las.size() > 50);
   REQUIRE(laz.size() == las.size());
-  for (std::size_t i = 0; i < las.size(); i += 97) CHECK(laz.world(i) == las.world(i));
+  for (std::size_t i = 0; i < las.size(); ++i) CHECK(laz.world(i) == las.world(i));
   CHECK(fs::file_size(dir / "t.laz") < fs::file_size(dir / "t.las"));
 }
