@@ -1,4 +1,5 @@
-// ramus scan FILE -o OUT.ply|.xyz|.las|.laz [--from x,y,z]... [--noise S] [--density D] [--max-range R]
+// ramus scan FILE -o OUT.ply|.xyz|.las|.laz [--from x,y,z]... [--noise S] [--density D]
+// [--max-range R]
 //                 [--leaves] [--truth OUT.json] [--seed S] [-n N] [-D name=value]...
 // ramus scan FILE... --forest N|--layout L.json --area WxH -o OUT [--station-spacing D] ...
 // Grows the grammar, meshes its tree and ray casts it from the scanner stations: a simulated

@@ -61,6 +61,14 @@ double robust_scale(const std::vector<double>& e) {
   return 1.4826 * *mid;
 }
 
+double robust_weight(double u, bool tukey) {
+  if (tukey) {
+    const double t = u / 4.685;
+    return t < 1 ? (1 - t * t) * (1 - t * t) : 0.0;
+  }
+  return u <= 1.345 ? 1.0 : 1.345 / u;
+}
+
 double angular_coverage(std::vector<double> ang) {
   if (ang.size() < 2) return 0.0;
   std::sort(ang.begin(), ang.end());
@@ -166,14 +174,7 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
     // Huber for the first third (a convex start), Tukey's biweight after (outliers get weight 0).
     const bool tukey = it >= iterations / 3;
     for (std::size_t i = 0; i < n; ++i) {
-      const double u = std::abs(e[i]) / scale;
-      if (tukey) {
-        const double t = u / 4.685;
-        rw[i] = t < 1 ? (1 - t * t) * (1 - t * t) : 0.0;
-      } else {
-        rw[i] = u <= 1.345 ? 1.0 : 1.345 / u;
-      }
-      rw[i] *= weight_of(weights, i);
+      rw[i] = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
     }
     Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
     Eigen::Vector3d jte = Eigen::Vector3d::Zero();

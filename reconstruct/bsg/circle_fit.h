@@ -27,6 +27,11 @@ struct CircleFit {
 // 1.4826 x the median of |e|: the standard deviation of Gaussian residuals, robustly.
 double robust_scale(const std::vector<double>& e);
 
+// The iteratively reweighted least-squares weight of a residual of u robust scales: Huber's
+// (k 1.345, a convex start) or, once the fit has settled, Tukey's biweight (c 4.685, outliers get
+// weight 0). Shared by the circle and the cylinder fits.
+double robust_weight(double u, bool tukey);
+
 // 2 pi minus the widest gap between the given angles (radians, any order): the arc they cover.
 double angular_coverage(std::vector<double> angles);
 

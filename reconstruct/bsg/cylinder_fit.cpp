@@ -64,14 +64,7 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   for (int it = 0; it < iterations; ++it) {
     const bool tukey = it >= iterations / 3;
     for (std::size_t i = 0; i < n; ++i) {
-      const double u = std::abs(e[i]) / scale;
-      if (tukey) {
-        const double k = u / 4.685;
-        rw[i] = k < 1 ? (1 - k * k) * (1 - k * k) : 0.0;
-      } else {
-        rw[i] = u <= 1.345 ? 1.0 : 1.345 / u;
-      }
-      rw[i] *= weight_of(weights, i);
+      rw[i] = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
     }
     Eigen::Matrix<double, 5, 5> jtj = Eigen::Matrix<double, 5, 5>::Zero();
     Eigen::Matrix<double, 5, 1> jte = Eigen::Matrix<double, 5, 1>::Zero();

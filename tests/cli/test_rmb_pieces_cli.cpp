@@ -181,8 +181,7 @@ TEST_CASE("rmb: a file whose pieces blocks fit different lsystems is refused as 
                       "  piece Y = fork(angle: 30, taper: 0.8);\n  root I;\n"
                       "  skeleton conifer;\n}\n");
   const fs::path out = tmp.path / "two.rmb";
-  const CliResult r =
-      run_ramus({"build", src.string(), "--target", "binary", "-o", out.string()});
+  const CliResult r = run_ramus({"build", src.string(), "--target", "binary", "-o", out.string()});
   INFO(r.out);
   CHECK(r.status == 1);
   CHECK(r.out.find("an .rmb holds one lsystem") != std::string::npos);

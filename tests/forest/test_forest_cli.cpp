@@ -116,7 +116,8 @@ TEST_CASE("forest commands refuse what does not apply", "[forest][cli]") {
   CHECK(r.status == 1);
 }
 
-TEST_CASE("a simulated scan written as .laz reads back to the points of its .las", "[forest][cli]") {
+TEST_CASE("a simulated scan written as .laz reads back to the points of its .las",
+          "[forest][cli]") {
   const fs::path dir = scratch("laz");
   for (const char* name : {"t.las", "t.laz"}) {
     const CliResult r = run_ramus({"scan", kTrees + "conifer.ramus", "--angular-step", "1", "-o",
