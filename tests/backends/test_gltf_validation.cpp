@@ -97,6 +97,17 @@ TEST_CASE("written glTF files pass the Khronos validator with no errors or warni
   }
   write_gltf(build_tree_lods(geo, wind_options), (dir / "geo_wind.glb").string());
   files.push_back(dir / "geo_wind.glb");
+  // Polygon organs (ABOP's `{ . }`) sway with the node they grew on, as leaf cards do.
+  Skeleton polygons = testing::synthetic_tree(16, 600);
+  REQUIRE(!polygons.organs.empty());
+  for (OrganAnchor& a : polygons.organs) {
+    const Vec3 p = a.position;
+    a.vertices = {p, p + Vec3{0.05, 0, 0.02}, p + Vec3{0.06, 0.03, 0.05}, p + Vec3{0, 0.02, 0.04}};
+  }
+  const auto windy_polygons = build_tree_lods(polygons, wind_options);
+  REQUIRE(windy_polygons.front().surfaces.triangle_count() > 0);
+  write_gltf(windy_polygons, (dir / "polygons_wind.glb").string());
+  files.push_back(dir / "polygons_wind.glb");
   write_gltf(tree(15, 800, 2, LeafStyle::kCrossed), (dir / "plain_draco.glb").string(),
              GltfCompression::kDraco);
   files.push_back(dir / "plain_draco.glb");
