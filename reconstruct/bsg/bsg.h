@@ -7,12 +7,23 @@
 
 #include <Eigen/Core>
 #include <Eigen/Geometry>
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
 namespace ramus::bsg {
 
 inline constexpr std::uint32_t kNone = 0xffffffffu;
+
+// Distance from p to the segment a-b (to a when the segment is a point): the skeleton comparison
+// and the inflation's merge check measure points against edges the same way.
+inline double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
+                                     const Eigen::Vector3d& b) {
+  const Eigen::Vector3d ab = b - a;
+  const double l2 = ab.squaredNorm();
+  const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+  return (p - a - t * ab).norm();
+}
 
 struct Arc {
   std::uint32_t to;
@@ -23,8 +34,8 @@ struct Arc {
 // cloud's offset, in double precision for the solvers.
 struct Graph {
   std::vector<Eigen::Vector3d> pos;
-  std::vector<std::uint32_t> points;      // input points merged into each vertex
-  std::vector<std::vector<Arc>> adj;      // symmetric
+  std::vector<std::uint32_t> points;  // input points merged into each vertex
+  std::vector<std::vector<Arc>> adj;  // symmetric
   std::size_t size() const { return pos.size(); }
   std::size_t edge_count() const;
   // Adds u-v in both directions unless present; returns whether it was added.

@@ -5,6 +5,7 @@
 #include <limits>
 #include <memory>
 
+#include "reconstruct/bsg/bsg.h"
 #include "reconstruct/bsg/kdtree.h"
 
 namespace ramus {
@@ -65,14 +66,6 @@ Match match(const Samples& from, const Samples& to, bool from_is_truth, const Co
   return m;
 }
 
-double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                              const Eigen::Vector3d& b) {
-  const Eigen::Vector3d ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return (p - a - t * ab).norm();
-}
-
 double quantile(std::vector<double> v, double q) {
   if (v.empty()) return 0;
   const auto k = std::ptrdiff_t(std::min(v.size() - 1, std::size_t(q * double(v.size()))));
@@ -118,7 +111,7 @@ void centre_errors(const std::vector<Skeleton>& truth, const std::vector<Skeleto
       const std::size_t m = index->knn(t.pos[i], 8, ids, d2);
       for (std::size_t j = 0; j < m; ++j) {
         const std::uint32_t s = seg_of[ids[j]];
-        best = std::min(best, point_segment_distance(t.pos[i], seg_a[s], seg_b[s]));
+        best = std::min(best, bsg::point_segment_distance(t.pos[i], seg_a[s], seg_b[s]));
       }
     }
     rel[k].push_back(best / r);

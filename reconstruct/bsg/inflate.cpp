@@ -5,6 +5,7 @@
 #include <array>
 #include <cmath>
 
+#include "reconstruct/bsg/bsg.h"
 #include "reconstruct/bsg/kdtree.h"
 #include "reconstruct/bsg/refine.h"
 
@@ -128,14 +129,6 @@ std::size_t remove_covered(Editable& e, std::uint32_t u, double overlap) {
     }
   }
   return merged;
-}
-
-double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
-                              const Eigen::Vector3d& b) {
-  const Eigen::Vector3d ab = b - a;
-  const double l2 = ab.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return (p - a - t * ab).norm();
 }
 
 // Whether replacing v and w by one vertex at `merged` keeps the branch where its samples are:
