@@ -227,7 +227,7 @@ void add_reconstruct(CLI::App& app, const GlobalOptions& global, std::function<i
                   "core")
       ->check(CLI::NonNegativeNumber);
   sub->add_option("--thin", args->thin,
-                  "keep one point per voxel of this edge (metres) as the points are read")
+                  "keep one point per voxel of this edge (metres) once the scan is read")
       ->check(CLI::PositiveNumber);
   sub->add_option("--bases", args->bases,
                   "tree bases: livny (density near the ground, default) or stems (stems at "

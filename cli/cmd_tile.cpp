@@ -163,7 +163,7 @@ void add_tile(CLI::App& app, const GlobalOptions& global, std::function<int()>& 
                   "crown, or trees at a border are cut")
       ->check(CLI::NonNegativeNumber);
   sub->add_option("--thin", args->thin,
-                  "keep one point per voxel of this edge (metres) as the points are read")
+                  "keep one point per voxel of this edge (metres) once the scan is read")
       ->check(CLI::PositiveNumber);
   sub->callback(
       [args, &global, &run] { run = [args, &global] { return run_tile(*args, global); }; });
