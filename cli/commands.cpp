@@ -24,6 +24,7 @@ void add_decompile(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_infer(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_compare(CLI::App&, const GlobalOptions&, std::function<int()>&);
 void add_lsp(CLI::App&, const GlobalOptions&, std::function<int()>&);
+void add_tiles(CLI::App&, const GlobalOptions&, std::function<int()>&);
 
 const std::vector<CommandSpec>& command_table() {
   static const std::vector<CommandSpec> table = {
@@ -41,6 +42,7 @@ const std::vector<CommandSpec>& command_table() {
       {"build", add_build},
       {"preview", add_preview},
       {"view", add_view},
+      {"tiles", add_tiles},
       {"reconstruct", add_reconstruct},
       {"classify", add_classify},
       {"scan", add_scan},
