@@ -16,6 +16,7 @@
 #include "backends/mesh/gltf_container.h"
 #include "backends/mesh/leaf_shape.h"
 #include "backends/mesh/up_axis.h"
+#include "backends/texture/bark_maps.h"
 
 namespace ramus::mesh {
 namespace {
@@ -70,23 +71,65 @@ class ModelBuilder : public GltfBufferBuilder {
     return int(model_.textures.size() - 1);
   }
 
-  int add_material(const std::string& name, bool leaf) {
-    const int tex =
-        leaf ? add_texture(leaf_texture_png(64, 128), "leaf", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
-             : add_texture(bark_texture_png(64, 64), "bark", TINYGLTF_TEXTURE_WRAP_REPEAT);
+  // Bark: base colour and normal map of a tile set (docs/textures.md), repeating; leaves: the
+  // alpha-masked leaf picture, 512 x 1024 so a leaf close to the camera stays sharp.
+  int add_material(const std::string& name, bool leaf, const texture::BarkTextures& bark) {
     tinygltf::Material m;
     m.name = name;
-    m.pbrMetallicRoughness.baseColorTexture.index = tex;
     m.pbrMetallicRoughness.metallicFactor = 0.0;
     m.pbrMetallicRoughness.roughnessFactor = leaf ? 0.6 : 0.9;
     if (leaf) {
+      m.pbrMetallicRoughness.baseColorTexture.index =
+          add_texture(leaf_texture_png(512, 1024), "leaf", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
       // Every leaf card carries a back face of its own, so the material stays single-sided.
       m.alphaMode = "MASK";
       m.alphaCutoff = 0.5;
       m.doubleSided = false;
+    } else {
+      m.pbrMetallicRoughness.baseColorTexture.index =
+          add_texture(bark.base_png, "bark", TINYGLTF_TEXTURE_WRAP_REPEAT);
+      m.normalTexture.index =
+          add_texture(bark.normal_png, "bark_normal", TINYGLTF_TEXTURE_WRAP_REPEAT);
     }
     model_.materials.push_back(m);
     return int(model_.materials.size() - 1);
+  }
+
+  // TANGENT of a normal-mapped part: per vertex, the direction in which u grows (from each
+  // triangle's UV gradient, summed over the triangles at the vertex and made orthogonal to the
+  // normal), w the handedness of (normal, tangent, direction of v). glTF asks for tangents with
+  // a normal map rather than leaving each viewer to derive its own.
+  int add_tangents(const MeshPart& part) {
+    const std::size_t n = part.vertex_count();
+    std::vector<Vec3> tu(n), tv(n);
+    for (std::size_t i = 0; i + 2 < part.indices.size(); i += 3) {
+      const std::uint32_t a = part.indices[i], b = part.indices[i + 1], c = part.indices[i + 2];
+      const Vec3 e1 = Vec3(part.positions[b]) - Vec3(part.positions[a]);
+      const Vec3 e2 = Vec3(part.positions[c]) - Vec3(part.positions[a]);
+      const double du1 = part.uvs[b][0] - part.uvs[a][0], dv1 = part.uvs[b][1] - part.uvs[a][1];
+      const double du2 = part.uvs[c][0] - part.uvs[a][0], dv2 = part.uvs[c][1] - part.uvs[a][1];
+      const double det = du1 * dv2 - du2 * dv1;
+      if (std::abs(det) < 1e-12) continue;
+      const Vec3 su = (e1 * dv2 - e2 * dv1) / det, sv = (e2 * du1 - e1 * du2) / det;
+      for (std::uint32_t v : {a, b, c}) {
+        tu[v] += su;
+        tv[v] += sv;
+      }
+    }
+    std::vector<std::array<float, 4>> tangents(n);
+    for (std::size_t v = 0; v < n; ++v) {
+      const Vec3 nrm(part.normals[v]);
+      Vec3 t = tu[v] - nrm * dot(nrm, tu[v]);
+      if (length(t) < 1e-12) {
+        // No UV gradient here: any direction across the normal.
+        t = cross(nrm, std::abs(nrm.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
+      }
+      t = t / length(t);
+      const double w = dot(cross(nrm, t), tv[v]) < 0 ? -1.0 : 1.0;
+      const Vec3f y = z_up_to_y_up(Vec3f{float(t.x), float(t.y), float(t.z)});
+      tangents[v] = {y.x, y.y, y.z, float(w)};
+    }
+    return add_float_attribute(tangents, 4, TINYGLTF_TYPE_VEC4);
   }
 
   // JOINTS_0 and WEIGHTS_0 of the wind skin: each vertex follows its node's two joints.
@@ -124,13 +167,15 @@ class ModelBuilder : public GltfBufferBuilder {
                      TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE, n, TINYGLTF_TYPE_VEC4, {}, {}, true);
   }
 
-  tinygltf::Primitive add_part(const MeshPart& part, int material, const WindRig& rig) {
+  tinygltf::Primitive add_part(const MeshPart& part, int material, const WindRig& rig,
+                               bool tangents) {
     tinygltf::Primitive prim;
     prim.mode = TINYGLTF_MODE_TRIANGLES;
     prim.material = material;
     prim.attributes["POSITION"] = add_float_attribute(y_up(part.positions), 3, TINYGLTF_TYPE_VEC3);
     prim.attributes["NORMAL"] = add_float_attribute(y_up(part.normals), 3, TINYGLTF_TYPE_VEC3);
     prim.attributes["TEXCOORD_0"] = add_float_attribute(part.uvs, 2, TINYGLTF_TYPE_VEC2);
+    if (tangents) prim.attributes["TANGENT"] = add_tangents(part);
     prim.attributes["_WIND"] = add_float_attribute(part.wind, 4, TINYGLTF_TYPE_VEC4);
     if (!rig.empty()) add_skin_attributes(prim, part, rig);
     prim.indices = add_indices(part.indices, part.vertex_count());
@@ -216,16 +261,18 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
     any_leaves = any_leaves || !m.leaves.empty();
   }
   if (!any_bark && !any_leaves) throw MeshError("nothing to write: the tree has no geometry");
-  const int bark = any_bark ? b.add_material("bark", false) : -1;
-  const int leaf = any_leaves ? b.add_material("leaf", true) : -1;
+  const texture::BarkTextures& textures =
+      lods.front().bark_textures ? *lods.front().bark_textures : texture::bundled_bark_textures();
+  const int bark = any_bark ? b.add_material("bark", false, textures) : -1;
+  const int leaf = any_leaves ? b.add_material("leaf", true, textures) : -1;
   auto& model = b.model();
   const std::string tree = lods.front().name.substr(0, lods.front().name.rfind("_LOD"));
   const WindRig& rig = lods.front().wind_rig;
   for (const TreeMesh& m : lods) {
     tinygltf::Mesh mesh;
     mesh.name = m.name;
-    if (!m.bark.empty()) mesh.primitives.push_back(b.add_part(m.bark, bark, rig));
-    if (!m.leaves.empty()) mesh.primitives.push_back(b.add_part(m.leaves, leaf, rig));
+    if (!m.bark.empty()) mesh.primitives.push_back(b.add_part(m.bark, bark, rig, true));
+    if (!m.leaves.empty()) mesh.primitives.push_back(b.add_part(m.leaves, leaf, rig, false));
     if (mesh.primitives.empty()) throw MeshError("level of detail " + m.name + " has no geometry");
     model.meshes.push_back(std::move(mesh));
   }
