@@ -15,6 +15,7 @@
 #include "backends/mesh/gltf_buffer_builder.h"
 #include "backends/mesh/gltf_container.h"
 #include "backends/mesh/leaf_shape.h"
+#include "backends/mesh/tangents.h"
 #include "backends/mesh/up_axis.h"
 #include "backends/texture/bark_maps.h"
 
@@ -54,23 +55,6 @@ class ModelBuilder : public GltfBufferBuilder {
                       TINYGLTF_TARGET_ARRAY_BUFFER, true);
   }
 
-  int add_texture(const std::string& png, const std::string& name, int wrap) {
-    tinygltf::Image image;
-    image.name = name;
-    image.mimeType = "image/png";
-    image.bufferView = add_view(png.data(), png.size(), 0);
-    model_.images.push_back(image);
-    tinygltf::Sampler sampler;
-    sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
-    sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
-    sampler.wrapS = sampler.wrapT = wrap;
-    model_.samplers.push_back(sampler);
-    tinygltf::Texture tex;
-    tex.sampler = tex.source = int(model_.images.size() - 1);
-    model_.textures.push_back(tex);
-    return int(model_.textures.size() - 1);
-  }
-
   // Bark: base colour and normal map of a tile set (docs/textures.md), repeating; leaves: the
   // alpha-masked leaf picture, 512 x 1024 so a leaf close to the camera stays sharp.
   int add_material(const std::string& name, bool leaf, const texture::BarkTextures& bark) {
@@ -93,43 +77,6 @@ class ModelBuilder : public GltfBufferBuilder {
     }
     model_.materials.push_back(m);
     return int(model_.materials.size() - 1);
-  }
-
-  // TANGENT of a normal-mapped part: per vertex, the direction in which u grows (from each
-  // triangle's UV gradient, summed over the triangles at the vertex and made orthogonal to the
-  // normal), w the handedness of (normal, tangent, direction of v). glTF asks for tangents with
-  // a normal map rather than leaving each viewer to derive its own.
-  int add_tangents(const MeshPart& part) {
-    const std::size_t n = part.vertex_count();
-    std::vector<Vec3> tu(n), tv(n);
-    for (std::size_t i = 0; i + 2 < part.indices.size(); i += 3) {
-      const std::uint32_t a = part.indices[i], b = part.indices[i + 1], c = part.indices[i + 2];
-      const Vec3 e1 = Vec3(part.positions[b]) - Vec3(part.positions[a]);
-      const Vec3 e2 = Vec3(part.positions[c]) - Vec3(part.positions[a]);
-      const double du1 = part.uvs[b][0] - part.uvs[a][0], dv1 = part.uvs[b][1] - part.uvs[a][1];
-      const double du2 = part.uvs[c][0] - part.uvs[a][0], dv2 = part.uvs[c][1] - part.uvs[a][1];
-      const double det = du1 * dv2 - du2 * dv1;
-      if (std::abs(det) < 1e-12) continue;
-      const Vec3 su = (e1 * dv2 - e2 * dv1) / det, sv = (e2 * du1 - e1 * du2) / det;
-      for (std::uint32_t v : {a, b, c}) {
-        tu[v] += su;
-        tv[v] += sv;
-      }
-    }
-    std::vector<std::array<float, 4>> tangents(n);
-    for (std::size_t v = 0; v < n; ++v) {
-      const Vec3 nrm(part.normals[v]);
-      Vec3 t = tu[v] - nrm * dot(nrm, tu[v]);
-      if (length(t) < 1e-12) {
-        // No UV gradient here: any direction across the normal.
-        t = cross(nrm, std::abs(nrm.x) < 0.9 ? Vec3{1, 0, 0} : Vec3{0, 1, 0});
-      }
-      t = t / length(t);
-      const double w = dot(cross(nrm, t), tv[v]) < 0 ? -1.0 : 1.0;
-      const Vec3f y = z_up_to_y_up(Vec3f{float(t.x), float(t.y), float(t.z)});
-      tangents[v] = {y.x, y.y, y.z, float(w)};
-    }
-    return add_float_attribute(tangents, 4, TINYGLTF_TYPE_VEC4);
   }
 
   // JOINTS_0 and WEIGHTS_0 of the wind skin: each vertex follows its node's two joints.
@@ -172,10 +119,21 @@ class ModelBuilder : public GltfBufferBuilder {
     tinygltf::Primitive prim;
     prim.mode = TINYGLTF_MODE_TRIANGLES;
     prim.material = material;
-    prim.attributes["POSITION"] = add_float_attribute(y_up(part.positions), 3, TINYGLTF_TYPE_VEC3);
-    prim.attributes["NORMAL"] = add_float_attribute(y_up(part.normals), 3, TINYGLTF_TYPE_VEC3);
+    const std::vector<Vec3f> positions = y_up(part.positions), normals = y_up(part.normals);
+    prim.attributes["POSITION"] = add_float_attribute(positions, 3, TINYGLTF_TYPE_VEC3);
+    prim.attributes["NORMAL"] = add_float_attribute(normals, 3, TINYGLTF_TYPE_VEC3);
     prim.attributes["TEXCOORD_0"] = add_float_attribute(part.uvs, 2, TINYGLTF_TYPE_VEC2);
-    if (tangents) prim.attributes["TANGENT"] = add_tangents(part);
+    if (tangents) {
+      // The bark's normal map needs them (tangents.h).
+      auto flat = [](const auto& v, std::size_t comps) {
+        const float* f = reinterpret_cast<const float*>(v.data());
+        return std::vector<float>(f, f + v.size() * comps);
+      };
+      const std::vector<float> t =
+          vertex_tangents(flat(positions, 3), flat(normals, 3), flat(part.uvs, 2), part.indices);
+      prim.attributes["TANGENT"] = add_floats(t.data(), t.size() / 4, 4, TINYGLTF_TYPE_VEC4,
+                                              TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    }
     prim.attributes["_WIND"] = add_float_attribute(part.wind, 4, TINYGLTF_TYPE_VEC4);
     if (!rig.empty()) add_skin_attributes(prim, part, rig);
     prim.indices = add_indices(part.indices, part.vertex_count());
