@@ -27,12 +27,14 @@ class GltfBufferBuilder {
 
   tinygltf::Model& model() { return model_; }
 
-  // A PNG texture (image in the buffer, linear mipmapped sampler with `wrap`); returns its index.
-  int add_texture(const std::string& png, const std::string& name, int wrap) {
+  // A texture (a PNG, or `mime`, image in the buffer, linear mipmapped sampler with `wrap`);
+  // returns its index.
+  int add_texture(const std::string& bytes, const std::string& name, int wrap,
+                  const std::string& mime = "image/png") {
     tinygltf::Image image;
     image.name = name;
-    image.mimeType = "image/png";
-    image.bufferView = add_view(png.data(), png.size(), 0);
+    image.mimeType = mime;
+    image.bufferView = add_view(bytes.data(), bytes.size(), 0);
     model_.images.push_back(image);
     tinygltf::Sampler sampler;
     sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;

@@ -71,9 +71,9 @@ class ModelBuilder : public GltfBufferBuilder {
       m.doubleSided = false;
     } else {
       m.pbrMetallicRoughness.baseColorTexture.index =
-          add_texture(bark.base_png, "bark", TINYGLTF_TEXTURE_WRAP_REPEAT);
+          add_texture(bark.base, "bark", TINYGLTF_TEXTURE_WRAP_REPEAT, bark.mime);
       m.normalTexture.index =
-          add_texture(bark.normal_png, "bark_normal", TINYGLTF_TEXTURE_WRAP_REPEAT);
+          add_texture(bark.normal, "bark_normal", TINYGLTF_TEXTURE_WRAP_REPEAT, bark.mime);
     }
     model_.materials.push_back(m);
     return int(model_.materials.size() - 1);

@@ -129,9 +129,9 @@ class Builder : public mesh::GltfBufferBuilder {
     // The bundled tile set's bark (docs/textures.md), repeating over the pieces' UVs.
     const texture::BarkTextures& bark = texture::bundled_bark_textures();
     m.pbrMetallicRoughness.baseColorTexture.index =
-        add_texture(bark.base_png, "bark", TINYGLTF_TEXTURE_WRAP_REPEAT);
+        add_texture(bark.base, "bark", TINYGLTF_TEXTURE_WRAP_REPEAT, bark.mime);
     m.normalTexture.index =
-        add_texture(bark.normal_png, "bark_normal", TINYGLTF_TEXTURE_WRAP_REPEAT);
+        add_texture(bark.normal, "bark_normal", TINYGLTF_TEXTURE_WRAP_REPEAT, bark.mime);
     m.pbrMetallicRoughness.metallicFactor = 0.0;
     m.pbrMetallicRoughness.roughnessFactor = 0.9;
     model_.materials.push_back(m);

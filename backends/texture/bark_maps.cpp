@@ -68,7 +68,7 @@ Image normal_map(const Image& picture, double strength) {
 BarkTextures bark_textures(const TileSet& set, std::uint64_t seed) {
   const Image base = wang_tiling(set, 4, seed);
   // Bark furrows are deep next to the plates: slopes of a few luminance steps per pixel.
-  return {encode_png(base), encode_png(normal_map(base, 6.0))};
+  return {encode_jpeg(base, 90), encode_jpeg(normal_map(base, 6.0), 90)};
 }
 
 const BarkTextures& bundled_bark_textures() {

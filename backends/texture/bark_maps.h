@@ -22,10 +22,12 @@ Image wang_tiling(const TileSet& set, int grid, std::uint64_t seed);
 // slopes (height 1 per full luminance range over one pixel is strength 1).
 Image normal_map(const Image& picture, double strength);
 
-// PNG bytes of a mesh's bark: base colour and normal map.
+// Encoded pictures of a mesh's bark: base colour and normal map, JPEG (quality 90: bark is
+// noisy, and PNG would make the textures several times the size of the geometry).
 struct BarkTextures {
-  std::string base_png;
-  std::string normal_png;
+  std::string base;
+  std::string normal;
+  std::string mime = "image/jpeg";
 };
 
 // From a tile set atlas: a 4 x 4 Wang tiling of its tiles (1024 x 1024 for 256-pixel tiles).
