@@ -96,7 +96,6 @@ void check_target_options(const BuildArgs& a, bool gltf) {
         "--wind needs a glTF output (.glb or .gltf): OBJ and PLY "
         "have no animation");
   if (!a.compress.empty()) throw UserError("--compress needs a glTF output (.glb or .gltf)");
-  if (!a.bark.empty()) throw UserError("--bark needs a glTF output (.glb or .gltf)");
 }
 
 mesh::GltfCompression compression(const std::string& name) {
@@ -232,7 +231,7 @@ void add_build(CLI::App& app, const GlobalOptions& global, std::function<int()>&
                   "meshopt (EXT_meshopt_compression, KHR_mesh_quantization); see docs/mesh.md")
       ->check(CLI::IsMember({"draco", "meshopt"}));
   sub->add_option("--bark", args->bark,
-                  "glTF: the bark's tile set atlas (.png from `ramus tiles`; default the bundled "
+                  "the bark's tile set atlas (.png from `ramus tiles`; default the bundled "
                   "procedural bark): base colour and a normal map from it, see docs/textures.md")
       ->check(CLI::ExistingFile);
   sub->add_option("--bark-edges", args->bark_edges,

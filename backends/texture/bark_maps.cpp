@@ -68,7 +68,13 @@ Image normal_map(const Image& picture, double strength) {
 BarkTextures bark_textures(const TileSet& set, std::uint64_t seed) {
   const Image base = wang_tiling(set, 4, seed);
   // Bark furrows are deep next to the plates: slopes of a few luminance steps per pixel.
-  return {encode_jpeg(base, 90), encode_jpeg(normal_map(base, 6.0), 90)};
+  Image grey(base.width, base.height);
+  for (std::size_t i = 0; i < base.rgb.size(); i += 3) {
+    const auto y = std::uint8_t(
+        std::lround(0.2126 * base.rgb[i] + 0.7152 * base.rgb[i + 1] + 0.0722 * base.rgb[i + 2]));
+    grey.rgb[i] = grey.rgb[i + 1] = grey.rgb[i + 2] = y;
+  }
+  return {encode_jpeg(base, 90), encode_jpeg(normal_map(base, 6.0), 90), encode_jpeg(grey, 90)};
 }
 
 const BarkTextures& bundled_bark_textures() {

@@ -27,6 +27,7 @@ Image normal_map(const Image& picture, double strength);
 struct BarkTextures {
   std::string base;
   std::string normal;
+  std::string height;  // the luminance as a grey picture (the bump map of OBJ's MTL)
   std::string mime = "image/jpeg";
 };
 

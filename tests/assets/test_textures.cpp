@@ -58,7 +58,16 @@ TEST_CASE("ramus tiles writes an atlas that ramus build --bark takes", "[assets]
   CHECK(r.out.find("not a readable picture") != std::string::npos);
   r = cli_test::run_ramus({"tiles", "--edges", "3", "-o", (dir.path / "y.png").string()});
   CHECK(r.status == 1);
-  r = cli_test::run_ramus({"build", example("trees/broadleaf.ramus"), "--bark", atlas.string(),
-                           "-o", (dir.path / "t.obj").string()});
-  CHECK(r.status == 1);
+  // OBJ: the MTL names the pictures, which lie beside it.
+  const fs::path obj = dir.path / "t.obj";
+  ramus_ok(
+      {"build", example("trees/broadleaf.ramus"), "--bark", atlas.string(), "-o", obj.string()});
+  const std::string mtl = cli_test::slurp(dir.path / "t.mtl");
+  for (const char* line : {"map_Kd t_bark.jpg", "bump t_bark_height.jpg", "norm t_bark_normal.jpg",
+                           "map_Kd t_leaf.png", "map_d t_leaf.png"}) {
+    INFO(line);
+    CHECK(mtl.find(line) != std::string::npos);
+  }
+  for (const char* f : {"t_bark.jpg", "t_bark_height.jpg", "t_bark_normal.jpg", "t_leaf.png"})
+    CHECK(fs::exists(dir.path / f));
 }
