@@ -15,6 +15,7 @@
 #include "backends/mesh/gltf_writer.h"
 #include "backends/mesh/openmesh_writer.h"
 #include "backends/mesh/tree_mesh.h"
+#include "backends/texture/bark_maps.h"
 #include "cli/build_binary.h"
 #include "cli/build_pieces.h"
 #include "cli/grow_args.h"
@@ -34,7 +35,9 @@ struct BuildArgs {
   double pipe_exponent = 0;
   std::string leaves = "quad";
   double leaf_scale = 1;
-  std::string compress;            // --compress: "", "draco" or "meshopt"
+  std::string compress;  // --compress: "", "draco" or "meshopt"
+  std::string bark;      // --bark: a tile set atlas; empty for the bundled set
+  int bark_edges = 2;
   std::vector<std::string> given;  // the options the command line gave
   PiecesBuildArgs pieces;
   BinaryBuildArgs binary;
@@ -51,9 +54,9 @@ void print_warnings(const mesh::MeshReport& report) {
 
 // The options each target reads; any other given with it is a mistake, not silently ignored.
 const std::vector<std::string>& target_options(const std::string& target) {
-  static const std::vector<std::string> mesh = {"--lod",           "--lod-files", "--up",
-                                                "--pipe-exponent", "--leaves",    "--leaf-scale",
-                                                "--wind",          "--compress"};
+  static const std::vector<std::string> mesh = {
+      "--lod",        "--lod-files", "--up",       "--pipe-exponent", "--leaves",
+      "--leaf-scale", "--wind",      "--compress", "--bark",          "--bark-edges"};
   static const std::vector<std::string> pieces = {"--lod",     "--flatten", "--gpu-instancing",
                                                   "--poses",   "--wind",    "--instance-buffer",
                                                   "--preview", "--pieces"};
@@ -122,6 +125,18 @@ std::size_t write_levels(const std::vector<mesh::TreeMesh>& lods, const BuildArg
   return gltf || a.lod_files ? lods.front().triangle_count() : lods.back().triangle_count();
 }
 
+// The bark textures of the tile set atlas --bark names (docs/textures.md).
+texture::BarkTextures bark_textures_of(const BuildArgs& a) {
+  try {
+    return texture::bark_textures(
+        texture::tile_set_from_atlas(texture::read_image(a.bark), a.bark_edges));
+  } catch (const texture::ImageError& e) {
+    throw UserError(e.what());
+  } catch (const std::invalid_argument& e) {
+    throw UserError("--bark " + a.bark + ": " + e.what());
+  }
+}
+
 int run_build(const BuildArgs& a, const GlobalOptions& global) {
   const std::string out_ext = extension(a.output);
   check_target_options(a, out_ext == ".glb" || out_ext == ".gltf");
@@ -155,6 +170,10 @@ int run_build(const BuildArgs& a, const GlobalOptions& global) {
       lods.push_back(mesh::build_tree_mesh(*skeleton, o, a.lod, &report));
     }
     print_warnings(report);
+    if (!a.bark.empty()) {
+      auto textures = std::make_shared<const texture::BarkTextures>(bark_textures_of(a));
+      for (mesh::TreeMesh& m : lods) m.bark_textures = textures;
+    }
     if (o.wind && lods.front().wind_rig.animated_joints() == 0)
       throw UserError("--wind: the tree has no branch long enough to sway");
     triangles = write_levels(lods, a, up, gltf);
@@ -211,6 +230,13 @@ void add_build(CLI::App& app, const GlobalOptions& global, std::function<int()>&
                   "glTF: compress the geometry with draco (KHR_draco_mesh_compression) or "
                   "meshopt (EXT_meshopt_compression, KHR_mesh_quantization); see docs/mesh.md")
       ->check(CLI::IsMember({"draco", "meshopt"}));
+  sub->add_option("--bark", args->bark,
+                  "the bark's tile set atlas (.png from `ramus tiles`; default the bundled "
+                  "procedural bark): base colour and a normal map from it, see docs/textures.md")
+      ->check(CLI::ExistingFile);
+  sub->add_option("--bark-edges", args->bark_edges,
+                  "edge colours K of the --bark atlas (1, 2 or 4; default 2)")
+      ->check(CLI::IsMember({1, 2, 4}));
   add_pieces_build_options(sub, args->pieces);
   add_binary_build_options(sub, args->binary);
   sub->callback([args, sub, &global, &run] {

@@ -11,6 +11,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -25,6 +26,26 @@ class GltfBufferBuilder {
   }
 
   tinygltf::Model& model() { return model_; }
+
+  // A texture (a PNG, or `mime`, image in the buffer, linear mipmapped sampler with `wrap`);
+  // returns its index.
+  int add_texture(const std::string& bytes, const std::string& name, int wrap,
+                  const std::string& mime = "image/png") {
+    tinygltf::Image image;
+    image.name = name;
+    image.mimeType = mime;
+    image.bufferView = add_view(bytes.data(), bytes.size(), 0);
+    model_.images.push_back(image);
+    tinygltf::Sampler sampler;
+    sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
+    sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
+    sampler.wrapS = sampler.wrapT = wrap;
+    model_.samplers.push_back(sampler);
+    tinygltf::Texture tex;
+    tex.sampler = tex.source = int(model_.images.size() - 1);
+    model_.textures.push_back(tex);
+    return int(model_.textures.size() - 1);
+  }
 
   // A view over a copy of `bytes` bytes at `data`; target 0 for views that are not vertex or
   // index data (images, inverse bind matrices, animation and instance data).

@@ -342,8 +342,9 @@ MeshoptStream meshopt_attribute(const std::string& name, const Elements& e, json
     filter = "EXPONENTIAL";
     return s;
   }
-  if (is_float && name == "NORMAL" && e.components == 3) {
-    const std::vector<std::int8_t> oct = meshopt_octahedral(e.floats(), e.count);
+  if (is_float && ((name == "NORMAL" && e.components == 3) ||
+                   (name == "TANGENT" && e.components == 4))) {
+    const std::vector<std::int8_t> oct = meshopt_octahedral(e.floats(), e.count, e.components);
     s.bytes.assign(reinterpret_cast<const char*>(oct.data()), oct.size());
     s.stride = 4;
     filter = "OCTAHEDRAL";

@@ -15,7 +15,9 @@
 #include "backends/mesh/gltf_buffer_builder.h"
 #include "backends/mesh/gltf_container.h"
 #include "backends/mesh/leaf_shape.h"
+#include "backends/mesh/tangents.h"
 #include "backends/mesh/up_axis.h"
+#include "backends/texture/bark_maps.h"
 
 namespace ramus::mesh {
 namespace {
@@ -53,37 +55,25 @@ class ModelBuilder : public GltfBufferBuilder {
                       TINYGLTF_TARGET_ARRAY_BUFFER, true);
   }
 
-  int add_texture(const std::string& png, const std::string& name, int wrap) {
-    tinygltf::Image image;
-    image.name = name;
-    image.mimeType = "image/png";
-    image.bufferView = add_view(png.data(), png.size(), 0);
-    model_.images.push_back(image);
-    tinygltf::Sampler sampler;
-    sampler.magFilter = TINYGLTF_TEXTURE_FILTER_LINEAR;
-    sampler.minFilter = TINYGLTF_TEXTURE_FILTER_LINEAR_MIPMAP_LINEAR;
-    sampler.wrapS = sampler.wrapT = wrap;
-    model_.samplers.push_back(sampler);
-    tinygltf::Texture tex;
-    tex.sampler = tex.source = int(model_.images.size() - 1);
-    model_.textures.push_back(tex);
-    return int(model_.textures.size() - 1);
-  }
-
-  int add_material(const std::string& name, bool leaf) {
-    const int tex =
-        leaf ? add_texture(leaf_texture_png(64, 128), "leaf", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE)
-             : add_texture(bark_texture_png(64, 64), "bark", TINYGLTF_TEXTURE_WRAP_REPEAT);
+  // Bark: base colour and normal map of a tile set (docs/textures.md), repeating; leaves: the
+  // alpha-masked leaf picture, 512 x 1024 so a leaf close to the camera stays sharp.
+  int add_material(const std::string& name, bool leaf, const texture::BarkTextures& bark) {
     tinygltf::Material m;
     m.name = name;
-    m.pbrMetallicRoughness.baseColorTexture.index = tex;
     m.pbrMetallicRoughness.metallicFactor = 0.0;
     m.pbrMetallicRoughness.roughnessFactor = leaf ? 0.6 : 0.9;
     if (leaf) {
+      m.pbrMetallicRoughness.baseColorTexture.index =
+          add_texture(leaf_texture_png(512, 1024), "leaf", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
       // Every leaf card carries a back face of its own, so the material stays single-sided.
       m.alphaMode = "MASK";
       m.alphaCutoff = 0.5;
       m.doubleSided = false;
+    } else {
+      m.pbrMetallicRoughness.baseColorTexture.index =
+          add_texture(bark.base, "bark", TINYGLTF_TEXTURE_WRAP_REPEAT, bark.mime);
+      m.normalTexture.index =
+          add_texture(bark.normal, "bark_normal", TINYGLTF_TEXTURE_WRAP_REPEAT, bark.mime);
     }
     model_.materials.push_back(m);
     return int(model_.materials.size() - 1);
@@ -136,13 +126,26 @@ class ModelBuilder : public GltfBufferBuilder {
     return int(model_.materials.size() - 1);
   }
 
-  tinygltf::Primitive add_part(const MeshPart& part, int material, const WindRig& rig) {
+  tinygltf::Primitive add_part(const MeshPart& part, int material, const WindRig& rig,
+                               bool tangents) {
     tinygltf::Primitive prim;
     prim.mode = TINYGLTF_MODE_TRIANGLES;
     prim.material = material;
-    prim.attributes["POSITION"] = add_float_attribute(y_up(part.positions), 3, TINYGLTF_TYPE_VEC3);
-    prim.attributes["NORMAL"] = add_float_attribute(y_up(part.normals), 3, TINYGLTF_TYPE_VEC3);
+    const std::vector<Vec3f> positions = y_up(part.positions), normals = y_up(part.normals);
+    prim.attributes["POSITION"] = add_float_attribute(positions, 3, TINYGLTF_TYPE_VEC3);
+    prim.attributes["NORMAL"] = add_float_attribute(normals, 3, TINYGLTF_TYPE_VEC3);
     prim.attributes["TEXCOORD_0"] = add_float_attribute(part.uvs, 2, TINYGLTF_TYPE_VEC2);
+    if (tangents) {
+      // The bark's normal map needs them (tangents.h).
+      auto flat = [](const auto& v, std::size_t comps) {
+        const float* f = reinterpret_cast<const float*>(v.data());
+        return std::vector<float>(f, f + v.size() * comps);
+      };
+      const std::vector<float> t =
+          vertex_tangents(flat(positions, 3), flat(normals, 3), flat(part.uvs, 2), part.indices);
+      prim.attributes["TANGENT"] = add_floats(t.data(), t.size() / 4, 4, TINYGLTF_TYPE_VEC4,
+                                              TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    }
     prim.attributes["_WIND"] = add_float_attribute(part.wind, 4, TINYGLTF_TYPE_VEC4);
     if (!rig.empty()) add_skin_attributes(prim, part, rig);
     prim.indices = add_indices(part.indices, part.vertex_count());
@@ -231,8 +234,10 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
   if (!any_bark && !any_leaves && !any_surfaces) {
     throw MeshError("nothing to write: the tree has no geometry");
   }
-  const int bark = any_bark ? b.add_material("bark", false) : -1;
-  const int leaf = any_leaves ? b.add_material("leaf", true) : -1;
+  const texture::BarkTextures& textures =
+      lods.front().bark_textures ? *lods.front().bark_textures : texture::bundled_bark_textures();
+  const int bark = any_bark ? b.add_material("bark", false, textures) : -1;
+  const int leaf = any_leaves ? b.add_material("leaf", true, textures) : -1;
   const int surface = any_surfaces ? b.add_surface_material() : -1;
   auto& model = b.model();
   const std::string tree = lods.front().name.substr(0, lods.front().name.rfind("_LOD"));
@@ -240,9 +245,9 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
   for (const TreeMesh& m : lods) {
     tinygltf::Mesh mesh;
     mesh.name = m.name;
-    if (!m.bark.empty()) mesh.primitives.push_back(b.add_part(m.bark, bark, rig));
-    if (!m.leaves.empty()) mesh.primitives.push_back(b.add_part(m.leaves, leaf, rig));
-    if (!m.surfaces.empty()) mesh.primitives.push_back(b.add_part(m.surfaces, surface, rig));
+    if (!m.bark.empty()) mesh.primitives.push_back(b.add_part(m.bark, bark, rig, true));
+    if (!m.leaves.empty()) mesh.primitives.push_back(b.add_part(m.leaves, leaf, rig, false));
+    if (!m.surfaces.empty()) mesh.primitives.push_back(b.add_part(m.surfaces, surface, rig, false));
     if (mesh.primitives.empty()) throw MeshError("level of detail " + m.name + " has no geometry");
     model.meshes.push_back(std::move(mesh));
   }

@@ -36,10 +36,12 @@ std::string meshopt_encode_triangles(const std::vector<std::uint32_t>& indices,
   return out;
 }
 
-std::vector<std::int8_t> meshopt_octahedral(const float* normals, std::size_t count) {
+std::vector<std::int8_t> meshopt_octahedral(const float* normals, std::size_t count,
+                                            int components) {
+  // Tangents (4 components) keep their w, the handedness, in the fourth byte.
   std::vector<float> four(count * 4, 0.0f);
   for (std::size_t i = 0; i < count; ++i)
-    for (int c = 0; c < 3; ++c) four[4 * i + c] = normals[3 * i + c];
+    for (int c = 0; c < components; ++c) four[4 * i + c] = normals[components * i + c];
   std::vector<std::int8_t> out(count * 4);
   meshopt_encodeFilterOct(out.data(), count, 4, 8, four.data());
   return out;

@@ -23,8 +23,10 @@ std::string meshopt_encode_attributes(const void* data, std::size_t count, std::
 std::string meshopt_encode_triangles(const std::vector<std::uint32_t>& indices,
                                      std::size_t vertex_count);
 
-// Unit normals (count * 3 floats) as the OCTAHEDRAL filter's 8-bit x, y, z, w per vertex.
-std::vector<std::int8_t> meshopt_octahedral(const float* normals, std::size_t count);
+// Unit normals (count * 3 floats) or tangents (count * 4, w = +-1 kept) as the OCTAHEDRAL
+// filter's 8-bit x, y, z, w per vertex.
+std::vector<std::int8_t> meshopt_octahedral(const float* normals, std::size_t count,
+                                            int components = 3);
 
 // Floats (count vectors of `components` each) as the EXPONENTIAL filter stores them: one 8-bit
 // exponent per vector and a `bits`-bit integer mantissa per component, as 32-bit words.

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "backends/mesh/leaf_shape.h"
 #include "core/atomic_file.h"
 #include "core/number_text.h"
 
@@ -109,10 +110,19 @@ std::string add_materials(const std::string& obj, const std::string& header,
 
 }  // namespace
 
-std::string obj_material_library() {
-  return "# ramus tree materials\n"
-         "newmtl bark\nKa 0 0 0\nKd 0.361 0.259 0.173\nKs 0.02 0.02 0.02\nNs 8\nd 1\nillum 2\n\n"
-         "newmtl leaf\nKa 0 0 0\nKd 0.275 0.529 0.176\nKs 0.05 0.05 0.05\nNs 16\nd 1\nillum 2\n\n"
+// Kd multiplies the maps in most viewers, so it stays near white; its tint (redder bark, greener
+// leaves) is what tells bark from leaf faces when the OBJ is read back (openmesh_reader.cpp).
+std::string obj_material_library(const std::string& stem) {
+  return "# ramus tree materials (docs/textures.md)\n"
+         "newmtl bark\nKa 0 0 0\nKd 1 0.96 0.92\nKs 0.02 0.02 0.02\nNs 8\nd 1\nillum 2\n"
+         "map_Kd " +
+         stem + "_bark.jpg\nbump " + stem + "_bark_height.jpg\nnorm " + stem +
+         "_bark_normal.jpg\n\n"
+         "newmtl leaf\nKa 0 0 0\nKd 0.92 1 0.9\nKs 0.05 0.05 0.05\nNs 16\nd 1\nillum 2\n"
+         "map_Kd " +
+         stem + "_leaf.png\nmap_d " + stem + "_leaf.png\n\n"
+         // The polygon organs (ABOP `{ . }`) stay untextured: their UVs are planar, for a user's
+         // own texture.
          "newmtl surface\nKa 0 0 0\nKd 0.275 0.529 0.176\nKs 0.05 0.05 0.05\nNs 16\nd 1\nillum 2\n";
 }
 
@@ -136,7 +146,15 @@ void write_openmesh(const TreeMesh& mesh, const std::string& path, UpAxis up) {
   std::filesystem::path mtl = p;
   mtl.replace_extension(".mtl");
   const std::string obj = write_to_string(to_openmesh(mesh, up), ".obj", opt);
-  write_file_atomically(mtl.string(), obj_material_library());
+  const std::string stem = p.stem().string();
+  const texture::BarkTextures& bark =
+      mesh.bark_textures ? *mesh.bark_textures : texture::bundled_bark_textures();
+  auto beside = [&](const std::string& name) { return (p.parent_path() / name).string(); };
+  write_file_atomically(beside(stem + "_bark.jpg"), bark.base);
+  write_file_atomically(beside(stem + "_bark_height.jpg"), bark.height);
+  write_file_atomically(beside(stem + "_bark_normal.jpg"), bark.normal);
+  write_file_atomically(beside(stem + "_leaf.png"), leaf_texture_png(512, 1024));
+  write_file_atomically(mtl.string(), obj_material_library(stem));
   write_file_atomically(
       path, add_materials(obj, placement_comments("# ", mesh, up), mtl.filename().string(),
                           mesh.bark.triangle_count(), mesh.leaves.triangle_count(),

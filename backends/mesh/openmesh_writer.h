@@ -19,7 +19,11 @@ namespace ramus::mesh {
 // empty mesh or an unknown extension, WriteError when a file cannot be written.
 void write_openmesh(const TreeMesh& mesh, const std::string& path, UpAxis up);
 
-// The MTL text `write_openmesh` puts beside an OBJ.
-std::string obj_material_library();
+// The MTL text `write_openmesh` puts beside an OBJ named STEM.obj: bark with map_Kd
+// STEM_bark.jpg, bump STEM_bark_height.jpg (a height map, as MTL's bump means) and norm
+// STEM_bark_normal.jpg (the tangent-space normal map, three.js's MTLLoader reads it); leaf with
+// map_Kd and map_d STEM_leaf.png (RGBA: the alpha is the leaf's outline). The pictures are
+// written beside the OBJ with it.
+std::string obj_material_library(const std::string& stem);
 
 }  // namespace ramus::mesh

@@ -4,11 +4,13 @@
 
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include "backends/mesh/wind_rig.h"
+#include "backends/texture/bark_maps.h"
 #include "core/skeleton.h"
 #include "core/vec3.h"
 
@@ -57,6 +59,8 @@ struct TreeMesh {
   // The joints and animation of the wind skin (MeshOptions::wind); empty otherwise. Every level
   // of a tree carries the same rig.
   WindRig wind_rig;
+  // The bark's base colour and normal map (docs/textures.md); null: the bundled tile set's.
+  std::shared_ptr<const texture::BarkTextures> bark_textures;
   std::size_t triangle_count() const {
     return bark.triangle_count() + leaves.triangle_count() + surfaces.triangle_count();
   }

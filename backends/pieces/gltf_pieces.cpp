@@ -17,7 +17,9 @@
 #include <sstream>
 
 #include "backends/mesh/gltf_buffer_builder.h"
+#include "backends/mesh/tangents.h"
 #include "backends/mesh/up_axis.h"
+#include "backends/texture/bark_maps.h"
 
 namespace ramus::pieces {
 namespace {
@@ -124,7 +126,12 @@ class Builder : public mesh::GltfBufferBuilder {
   int material() {
     tinygltf::Material m;
     m.name = "bark";
-    m.pbrMetallicRoughness.baseColorFactor = {0.45, 0.33, 0.22, 1.0};
+    // The bundled tile set's bark (docs/textures.md), repeating over the pieces' UVs.
+    const texture::BarkTextures& bark = texture::bundled_bark_textures();
+    m.pbrMetallicRoughness.baseColorTexture.index =
+        add_texture(bark.base, "bark", TINYGLTF_TEXTURE_WRAP_REPEAT, bark.mime);
+    m.normalTexture.index =
+        add_texture(bark.normal, "bark_normal", TINYGLTF_TEXTURE_WRAP_REPEAT, bark.mime);
     m.pbrMetallicRoughness.metallicFactor = 0.0;
     m.pbrMetallicRoughness.roughnessFactor = 0.9;
     model_.materials.push_back(m);
@@ -189,6 +196,9 @@ struct SkinnedVertices {
         b.floats(nrm, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
     prim.attributes["TEXCOORD_0"] =
         b.floats(uv, 2, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    // The bark material's normal map needs tangents (mesh/tangents.h).
+    prim.attributes["TANGENT"] = b.floats(mesh::vertex_tangents(pos, nrm, uv, idx), 4,
+                                          TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER, true);
     prim.attributes[skinned ? "JOINTS_0" : "_JOINTS_0"] = b.joints(jts, wide_joints);
     prim.attributes[skinned ? "WEIGHTS_0" : "_WEIGHTS_0"] =
         b.floats(wts, 4, TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER, !skinned);

@@ -1,6 +1,7 @@
 #include "backends/texture/image.h"
 
 #include <stb_image.h>
+#include <stb_image_write.h>
 
 #include <cstring>
 #include <fstream>
@@ -47,6 +48,23 @@ Image read_image(const std::string& path) {
 
 std::string encode_png(const Image& image) {
   return preview::encode_png(image.rgb.data(), image.width, image.height, 3);
+}
+
+}  // namespace ramus::texture
+
+namespace ramus::texture {
+
+std::string encode_jpeg(const Image& image, int quality) {
+  std::string out;
+  auto append = [](void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
+  };
+  if (image.width <= 0 || image.height <= 0 ||
+      !stbi_write_jpg_to_func(append, &out, image.width, image.height, 3, image.rgb.data(),
+                              quality)) {
+    throw std::runtime_error("JPEG encoding failed");
+  }
+  return out;
 }
 
 }  // namespace ramus::texture

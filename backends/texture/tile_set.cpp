@@ -311,6 +311,26 @@ Image highlight_joins(const TileSet& set) {
   return out;
 }
 
+TileSet tile_set_from_atlas(Image atlas, int edges) {
+  if (edges != 1 && edges != 2 && edges != 4) {
+    throw std::invalid_argument("edge colours must be 1, 2 or 4; got " + std::to_string(edges));
+  }
+  const int per_side = edges * edges, tile = atlas.width / per_side;
+  if (atlas.width != atlas.height || atlas.width % per_side != 0 || tile < 32 || tile > 2048 ||
+      (tile & (tile - 1)) != 0) {
+    throw std::invalid_argument(
+        "a tile set atlas of " + std::to_string(edges) + " edge colours is square with a side of " +
+        std::to_string(per_side) + " power-of-two tiles (32..2048 pixels); this picture is " +
+        std::to_string(atlas.width) + "x" + std::to_string(atlas.height));
+  }
+  TileSet set;
+  set.edges = edges;
+  set.tile = tile;
+  set.source.assign(atlas.rgb.size() / 3, 2);
+  set.atlas = std::move(atlas);
+  return set;
+}
+
 std::string atlas_mismatch(int width, int height, int edges, int tile) {
   const int side = edges * edges * tile;
   if (width == side && height == side) return {};

@@ -61,6 +61,11 @@ TileSet bundled_tile_set(const TileSetOptions& options = {});
 // tile borders in dark grey: the picture that shows where the cuts ran.
 Image highlight_joins(const TileSet& set);
 
+// The set a tile set atlas holds (as `ramus tiles` writes it) for K = `edges`; throws
+// std::invalid_argument when the picture cannot be such an atlas (not square, or its side not
+// K^2 tiles of a power-of-two size from 32 to 2048). `source` is all 2 (the joins are unknown).
+TileSet tile_set_from_atlas(Image atlas, int edges);
+
 // Checks that an atlas of `width` x `height` can hold a set of K edges and tiles of `tile`
 // pixels; returns the message for a mismatch, empty if it fits.
 std::string atlas_mismatch(int width, int height, int edges, int tile);

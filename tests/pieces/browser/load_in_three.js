@@ -5,7 +5,7 @@
 //   {"file", "skinnedMeshes", "bones", "skins", "meshes", "instancedMeshes", "instances",
 //    "drawCalls", "triangles", "drawnPixels", "pixels", "minX", "minY", "minZ", "maxX", "maxY",
 //    "maxZ", "rootX", "rootY", "rootZ", "footY", "loadMs", "animations", "period", "tipMove",
-//    "baseMove"}
+//    "baseMove", "texturedMaterials", "normalMappedMaterials", "alphaTestedPrimitives"}
 // skinnedMeshes counts THREE.SkinnedMesh objects, bones the distinct THREE.Bone objects,
 // skins the distinct skeletons, instances the sum of InstancedMesh counts; drawCalls and
 // triangles come from renderer.info after one render; drawnPixels are the pixels of the
@@ -18,8 +18,13 @@
 // period is its duration, tipMove the largest displacement between time 0 and a quarter period
 // of a drawn vertex in the top tenth of the tree, baseMove the same within 3 % of the height of
 // the trunk's foot (the skin's first joint, else the lowest vertex).
+// texturedMaterials counts the distinct materials with a base colour map, normalMappedMaterials
+// those that also have a normal map, alphaTestedPrimitives the meshes whose material has a map
+// and an alpha test (glTF alphaMode MASK: the leaves).
 // The files are served from a localhost HTTP server; the browser gets a fresh profile. With
-// RAMUS_THREE_SCREENSHOTS=1 the picture of each file is kept as FILE.three.png.
+// RAMUS_THREE_SCREENSHOTS=1 the picture of each file is kept as FILE.three.png; for pictures
+// RAMUS_THREE_SIZE=N draws N x N pixels, RAMUS_THREE_ZOOM=F moves the camera to F times the
+// distance towards the trunk a third of the way up, RAMUS_THREE_SKY=1 draws a sky-blue ground.
 //   node load_in_three.js FILE.glb...
 // Exit codes: 0 loaded every file, 1 a file failed to load or render, 2 usage,
 // 77 Chromium (or WebGL in it) cannot run here: the message on stderr says why.
@@ -98,27 +103,31 @@ function sampleWind(gltf, box) {
   }
   return { period: clip.duration, tipMove: tip, baseMove: base };
 }
-window.loadAndRender = async (url) => {
+window.loadAndRender = async (url, look = {}) => {
   const start = performance.now();
   const gltf = await new GLTFLoader().setDRACOLoader(draco).setMeshoptDecoder(MeshoptDecoder)
     .loadAsync(url);
   const loadMs = performance.now() - start;
   const scene = new THREE.Scene();
-  const background = new THREE.Color(0x000000);
+  const background = new THREE.Color(look.sky ? 0xbcd4e6 : 0x000000);
   scene.background = background;
   scene.add(new THREE.AmbientLight(0xffffff, 1.5));
   const sun = new THREE.DirectionalLight(0xffffff, 2.0);
   sun.position.set(1, 2, 3);
   scene.add(sun);
   scene.add(gltf.scene);
-  const bones = new Set(), skins = new Set();
-  let skinned = 0, meshes = 0, instanced = 0, instances = 0;
+  const bones = new Set(), skins = new Set(), textured = new Set(), normalMapped = new Set();
+  let skinned = 0, meshes = 0, instanced = 0, instances = 0, alphaTested = 0;
   gltf.scene.updateMatrixWorld(true);
   gltf.scene.traverse((o) => {
     if (o.isBone) bones.add(o);
     if (o.isMesh) {
       meshes++;
       o.frustumCulled = false;
+      const mat = o.material;
+      if (mat && mat.map) textured.add(mat);
+      if (mat && mat.map && mat.normalMap) normalMapped.add(mat);
+      if (mat && mat.map && mat.alphaTest > 0) alphaTested++;
     }
     if (o.isSkinnedMesh) {
       skinned++;
@@ -152,7 +161,7 @@ window.loadAndRender = async (url) => {
       }
     }
   });
-  const size = 256;
+  const size = look.size || 256;
   const canvas = document.createElement('canvas');
   canvas.width = canvas.height = size;
   document.body.appendChild(canvas);
@@ -165,11 +174,13 @@ window.loadAndRender = async (url) => {
   const extent = box.getSize(new THREE.Vector3());
   const fov = 40;
   const fit = Math.max(extent.x, extent.y, 1e-6) / 2 / Math.tan((fov / 2) * Math.PI / 180) / 0.9;
-  const distance = fit + extent.z / 2;
+  const distance = (fit + extent.z / 2) * (look.zoom || 1);
   const camera = new THREE.PerspectiveCamera(fov, 1, distance * 0.01, distance * 4 + extent.z);
-  camera.position.copy(centre).add(new THREE.Vector3(0, 0, distance));
+  // A close look (zoom < 1) aims at the trunk a third of the way up.
+  const target = look.zoom ? new THREE.Vector3(centre.x, box.min.y + extent.y / 3, centre.z) : centre;
+  camera.position.copy(target).add(new THREE.Vector3(0, 0, distance));
   camera.up.set(0, 1, 0);
-  camera.lookAt(centre);
+  camera.lookAt(target);
   renderer.info.autoReset = false;
   renderer.info.reset();
   renderer.render(scene, camera);
@@ -184,7 +195,9 @@ window.loadAndRender = async (url) => {
     instancedMeshes: instanced, instances, drawCalls: renderer.info.render.calls,
     triangles: renderer.info.render.triangles, drawnPixels: drawn, pixels: size * size,
     minX: box.min.x, minY: box.min.y, minZ: box.min.z, maxX: box.max.x, maxY: box.max.y,
-    maxZ: box.max.z, loadMs, animations: gltf.animations.length };
+    maxZ: box.max.z, loadMs, animations: gltf.animations.length,
+    texturedMaterials: textured.size, normalMappedMaterials: normalMapped.size,
+    alphaTestedPrimitives: alphaTested };
   // The root node's world position (a georeferenced tree's offset) and the lowest drawn point
   // within 1 % of the height of it (the trunk's foot, for a tree grown from the origin).
   const root = gltf.scene.children[0].getWorldPosition(new THREE.Vector3());
@@ -266,7 +279,9 @@ function serve() {
       try {
         const url = `/files/${i}/${encodeURIComponent(path.basename(files[i]))}`;
         if (process.env.RAMUS_THREE_SCREENSHOTS) await page.evaluate(() => { window.screenshotWanted = true; });
-        const r = await page.evaluate((u) => window.loadAndRender(u), url);
+        const look = { size: Number(process.env.RAMUS_THREE_SIZE) || 0,
+          zoom: Number(process.env.RAMUS_THREE_ZOOM) || 0, sky: !!process.env.RAMUS_THREE_SKY };
+        const r = await page.evaluate(([u, l]) => window.loadAndRender(u, l), [url, look]);
         if (r.png) {
           // RAMUS_THREE_SCREENSHOTS=1 keeps what three.js drew beside each file (FILE.three.png).
           fs.writeFileSync(files[i] + '.three.png', Buffer.from(r.png.split(',')[1], 'base64'));
