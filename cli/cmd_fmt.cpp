@@ -3,15 +3,14 @@
 // nothing is written: the files that would change are named on stdout and the exit code is 1.
 // A file with syntax errors is reported and left untouched (exit 1).
 #include <cstdio>
-#include <fstream>
 #include <memory>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <vector>
 
 #include "cli/command.h"
 #include "core/atomic_file.h"
+#include "core/input_file.h"
 #include "grammar/format.h"
 #include "grammar/parser.h"
 
@@ -25,15 +24,6 @@ struct FmtArgs {
 };
 
 enum class Outcome { Unchanged, Changed, Failed };
-
-bool read_file(const std::string& path, std::string& text) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return false;
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  text = ss.str();
-  return !in.bad();
-}
 
 // The formatted text of `path`, or nullopt (after reporting why) when it cannot be formatted.
 std::optional<std::string> formatted(const std::string& path, const std::string& text) {
@@ -62,9 +52,9 @@ std::optional<std::string> formatted(const std::string& path, const std::string&
 }
 
 Outcome format_one(const std::string& path, const FmtArgs& args, const GlobalOptions& global) {
-  std::string text;
-  if (!read_file(path, text)) {
-    std::fprintf(stderr, "ramus fmt: error: cannot read %s\n", path.c_str());
+  std::string text, error;
+  if (!read_input_file(path, text, error)) {
+    std::fprintf(stderr, "ramus fmt: error: cannot read %s: %s\n", path.c_str(), error.c_str());
     return Outcome::Failed;
   }
   std::optional<std::string> result = formatted(path, text);

@@ -1,4 +1,5 @@
 // ramus: the command-line interface. A thin layer over the libraries; see docs/cli.md.
+#include <cstdint>
 #include <cstdio>
 #include <exception>
 #include <functional>
@@ -6,6 +7,7 @@
 #include "cli/command.h"
 #include "cli/output_path.h"
 #include "core/atomic_file.h"
+#include "core/input_file.h"
 
 int main(int argc, char** argv) {
   using namespace ramus::cli;
@@ -14,6 +16,11 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", "ramus 0.1.0");
   GlobalOptions global;
   app.add_flag("-q,--quiet", global.quiet, "no progress output");
+  std::uint64_t max_file_bytes = ramus::kDefaultMaxInputFileBytes;
+  app.add_option("--max-file-size", max_file_bytes,
+                 "refuse any input file (scan, grammar, skeleton, .rmb, manifest) larger than "
+                 "this (bytes, or with K, M, G: 2G); default 64G")
+      ->transform(CLI::AsSizeValue(false));
 
   std::function<int()> run;
   for (const CommandSpec& spec : command_table()) spec.add(app, global, run);
@@ -24,6 +31,7 @@ int main(int argc, char** argv) {
     int code = app.exit(e);
     return code == 0 ? 0 : 2;
   }
+  ramus::set_max_input_file_bytes(max_file_bytes);
   try {
     check_output_paths();  // before any work: a missing output directory fails at once
     return run ? run() : 2;

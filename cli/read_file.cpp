@@ -1,18 +1,15 @@
 #include "cli/read_file.h"
 
-#include <fstream>
-#include <sstream>
 
 #include "cli/command.h"
+#include "core/input_file.h"
 
 namespace ramus::cli {
 
 std::string read_file_bytes(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw UserError("cannot open " + path);
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
+  std::string bytes, error;
+  if (!read_input_file(path, bytes, error)) throw UserError(path + ": " + error);
+  return bytes;
 }
 
 }  // namespace ramus::cli

@@ -1,8 +1,7 @@
 #include "formats/forest_layout.h"
 
-#include <fstream>
-#include <sstream>
 
+#include "core/input_file.h"
 #include "formats/detail/json.h"
 #include "formats/detail/json_reader.h"
 #include "formats/detail/reader_util.h"
@@ -40,11 +39,9 @@ std::vector<LayoutTree> forest_layout_from_json(std::string_view text, const std
 }
 
 std::vector<LayoutTree> read_forest_layout(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) formats_detail::fail(path, "cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return forest_layout_from_json(text.str(), path);
+  std::string text, error;
+  if (!read_input_file(path, text, error)) formats_detail::fail(path, error);
+  return forest_layout_from_json(text, path);
 }
 
 }  // namespace ramus

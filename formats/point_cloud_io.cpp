@@ -1,11 +1,9 @@
 // Format dispatch: magic bytes first, then the file extension, then plain text as XYZ.
 #include "formats/point_cloud_io.h"
 
-#include <cerrno>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 
+#include "core/input_file.h"
 #include "formats/detail/reader_util.h"
 
 namespace ramus {
@@ -86,14 +84,8 @@ PointCloud read_point_cloud(const std::string& path, const ReadOptions& options,
                             ReadReport* report) {
   std::error_code ec;
   if (std::filesystem::is_directory(path, ec)) fail(path, "is a directory, not a point-cloud file");
-  std::ifstream in(path, std::ios::binary);
-  if (!in) fail(path, std::string("cannot open the file (") + std::strerror(errno) + ")");
-  in.seekg(0, std::ios::end);
-  std::streamoff size = in.tellg();
-  if (size < 0) fail(path, "cannot determine the file's size");
-  in.seekg(0, std::ios::beg);
-  std::string bytes(std::size_t(size), '\0');
-  if (size > 0 && !in.read(bytes.data(), size)) fail(path, "cannot read the file");
+  std::string bytes, error;
+  if (!read_input_file(path, bytes, error)) fail(path, error);
   // Magic bytes decide when present, so a PLY saved as .txt still reads; otherwise the
   // extension, so a .las without its signature gets the LAS reader's precise complaint.
   Format format = sniff_format(bytes);

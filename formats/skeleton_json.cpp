@@ -2,10 +2,9 @@
 
 #include <charconv>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 
 #include "core/atomic_file.h"
+#include "core/input_file.h"
 #include "core/number_text.h"
 #include "formats/detail/json.h"
 #include "formats/detail/json_reader.h"
@@ -235,11 +234,9 @@ void write_skeleton_json(const std::string& path, const Skeleton& skeleton) {
 }
 
 Skeleton read_skeleton_json(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) formats_detail::fail(path, "cannot open the file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return skeleton_from_json(ss.str(), path);
+  std::string text, error;
+  if (!read_input_file(path, text, error)) formats_detail::fail(path, error);
+  return skeleton_from_json(text, path);
 }
 
 }  // namespace ramus

@@ -1,8 +1,7 @@
 #include "formats/tile_manifest.h"
 
-#include <fstream>
-#include <sstream>
 
+#include "core/input_file.h"
 #include "core/number_text.h"
 #include "formats/detail/json.h"
 #include "formats/detail/json_reader.h"
@@ -132,11 +131,9 @@ void write_tile_manifest(const std::string& path, const TileManifest& manifest) 
 }
 
 TileManifest read_tile_manifest(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) formats_detail::fail(path, "cannot open the file");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return tile_manifest_from_json(text.str(), path);
+  std::string text, error;
+  if (!read_input_file(path, text, error)) formats_detail::fail(path, error);
+  return tile_manifest_from_json(text, path);
 }
 
 }  // namespace ramus

@@ -3,16 +3,14 @@
 #include "grammar/loader.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cstdlib>
-#include <cstring>
 #include <filesystem>
-#include <fstream>
 #include <map>
 #include <optional>
 #include <sstream>
 #include <system_error>
 
+#include "core/input_file.h"
 #include "grammar/parser.h"
 
 #ifndef RAMUS_STDLIB_DIR
@@ -47,26 +45,9 @@ std::vector<std::string> default_stdlib_dirs() {
 
 namespace {
 
-// Reads a whole file; nullopt-like failure reported through `error`.
+// Reads a whole file (core/input_file.h: under --max-file-size); failure reported through `error`.
 bool read_file(const fs::path& path, std::string& text, std::string& error) {
-  std::error_code ec;
-  if (fs::is_directory(path, ec)) {
-    error = "is a directory";
-    return false;
-  }
-  std::ifstream in(path, std::ios::binary);
-  if (!in) {
-    error = std::strerror(errno);
-    return false;
-  }
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  if (in.bad()) {
-    error = "read error";
-    return false;
-  }
-  text = ss.str();
-  return true;
+  return read_input_file(path, text, error);
 }
 
 class Loader {

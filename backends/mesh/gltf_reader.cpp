@@ -15,6 +15,7 @@
 #include "backends/mesh/gltf_accessors.h"
 #include "backends/mesh/mesh_reader.h"
 #include "backends/mesh/up_axis.h"
+#include "core/input_file.h"
 
 namespace ramus::mesh {
 namespace {
@@ -375,6 +376,7 @@ TreeMesh read_gltf_mesh(const std::string& path) {
   } else {
     throw MeshError(path + ": cannot open the file");
   }
+  if (std::string e = input_file_size_error(path); !e.empty()) throw MeshError(path + ": " + e);
   const bool binary = magic == "glTF";
   const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
                          : loader.LoadASCIIFromFile(&model, &err, &warn, path);

@@ -5,6 +5,7 @@
 // told apart by colour (the MTL's Kd read as face colours, or PLY vertex colours): greener than
 // red is leaf.
 #include "backends/mesh/mesh_reader.h"
+#include "core/input_file.h"
 
 // GCC 12 reports a false maybe-uninitialized inside OpenMesh's property containers.
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
@@ -64,6 +65,7 @@ TreeMesh read_openmesh_mesh(const std::string& path) {
   om.request_face_colors();
   OpenMesh::IO::Options opt = OpenMesh::IO::Options::VertexNormal |
                               OpenMesh::IO::Options::VertexColor | OpenMesh::IO::Options::FaceColor;
+  if (std::string e = input_file_size_error(path); !e.empty()) throw MeshError(path + ": " + e);
   if (!OpenMesh::IO::read_mesh(om, path, opt)) {
     throw MeshError(path + ": cannot read the " + std::string(ply ? "PLY" : "OBJ") + " file");
   }

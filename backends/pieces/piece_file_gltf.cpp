@@ -13,6 +13,7 @@
 
 #include "backends/mesh/gltf_accessors.h"
 #include "backends/pieces/piece_build.h"
+#include "core/input_file.h"
 
 namespace ramus::pieces {
 
@@ -162,6 +163,7 @@ PieceDraft draft_gltf_file(const std::string& name, const std::string& path,
                 : loader.LoadASCIIFromString(&model, &err, &warn, bytes->data(),
                                              static_cast<unsigned int>(bytes->size()), "");
   } else {
+    if (std::string e = input_file_size_error(path); !e.empty()) throw PiecesError(path + ": " + e);
     ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
                 : loader.LoadASCIIFromFile(&model, &err, &warn, path);
   }

@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "backends/pieces/piece_build.h"
+#include "core/input_file.h"
 
 namespace ramus::pieces {
 
@@ -37,6 +38,7 @@ PieceDraft draft_obj_file(const std::string& name, const std::string& path,
   if (bytes) {
     memory.str(*bytes);
   } else {
+    if (std::string e = input_file_size_error(path); !e.empty()) throw PiecesError(path + ": " + e);
     file.open(path, std::ios::binary);
     if (!file) throw PiecesError(path + ": cannot read the piece file");
   }

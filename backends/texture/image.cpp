@@ -4,11 +4,10 @@
 #include <stb_image_write.h>
 
 #include <cstring>
-#include <fstream>
 #include <memory>
-#include <sstream>
 
 #include "backends/preview/png.h"
+#include "core/input_file.h"
 
 namespace ramus::texture {
 
@@ -39,11 +38,9 @@ Image decode_image(const std::string& bytes, const std::string& name) {
 }
 
 Image read_image(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ImageError(path + ": cannot open");
-  std::ostringstream s;
-  s << in.rdbuf();
-  return decode_image(s.str(), path);
+  std::string bytes, error;
+  if (!read_input_file(path, bytes, error)) throw ImageError(path + ": " + error);
+  return decode_image(bytes, path);
 }
 
 std::string encode_png(const Image& image) {

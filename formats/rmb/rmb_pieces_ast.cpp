@@ -2,11 +2,10 @@
 
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <map>
 #include <unordered_map>
 
+#include "core/input_file.h"
 #include "core/number_text.h"
 #include "formats/rmb/rmb_codec.h"
 #include "formats/rmb/rmb_decompiled_number.h"
@@ -38,10 +37,10 @@ class Constants {
 };
 
 std::string read_bytes(const fs::path& p, const std::string& block) {
-  std::ifstream in(p, std::ios::binary);
-  if (!in) refuse(block, "cannot read the mesh file " + p.string());
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) refuse(block, "cannot read the mesh file " + p.string());
+  std::string bytes, error;
+  if (!read_input_file(p, bytes, error)) {
+    refuse(block, "cannot read the mesh file " + p.string() + ": " + error);
+  }
   return bytes;
 }
 

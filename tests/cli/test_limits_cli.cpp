@@ -91,3 +91,33 @@ TEST_CASE("limits: .rmb file size and decompressed size", "[cli][limits]") {
   CHECK(has(b.out, "expected a file of at most 64 MiB"));
   CHECK_FALSE(fs::exists(out));
 }
+
+TEST_CASE("limits: the size of any input file: --max-file-size", "[cli][limits]") {
+  cli_test::TempDir dir;
+  const std::string grammar = dir.write("doubling.ramus", kDoubling).string();
+  std::string xyz;
+  for (int i = 0; i < 200; ++i) xyz += std::to_string(i * 0.01) + " 0 " + std::to_string(i) + "\n";
+  const std::string scan = dir.write("scan.xyz", xyz).string();
+  const fs::path glb = dir.path / "tree.glb", json = dir.path / "skeleton.json";
+  // A grammar over the limit: refused before it is parsed, no output.
+  const auto g = run_ramus({"--max-file-size", "16", "build", grammar, "-o", glb.string()});
+  CHECK(g.status == 1);
+  CHECK(has(g.out, "more than the limit of 16 (--max-file-size)"));
+  CHECK_FALSE(fs::exists(glb));
+  // A scan over the limit, with K as the unit.
+  const auto s = run_ramus({"--max-file-size", "1K", "reconstruct", scan, "-o", json.string()});
+  CHECK(s.status == 1);
+  CHECK(has(s.out, "scan.xyz"));
+  CHECK(has(s.out, "more than the limit of 1024 (--max-file-size)"));
+  CHECK_FALSE(fs::exists(json));
+  // A binary grammar over the limit.
+  const fs::path rmb = dir.path / "t.rmb";
+  REQUIRE(run_ramus({"build", grammar, "--target", "binary", "-o", rmb.string()}).status == 0);
+  const auto b = run_ramus({"--max-file-size", "8", "derive", rmb.string()});
+  CHECK(b.status == 1);
+  CHECK(has(b.out, "--max-file-size"));
+  // Under the limit the same files are read.
+  CHECK(run_ramus({"--max-file-size", "1M", "build", grammar, "-n", "3", "-o", glb.string()})
+            .status == 0);
+  CHECK(run_ramus({"--max-file-size", "1M", "inspect", scan}).status == 0);
+}
