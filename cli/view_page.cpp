@@ -124,6 +124,8 @@ const coverage = json.nodes[rootIndex].extras?.MSFT_screencoverage ?? [];
 const meshesOf = (o) => (o.isMesh ? [o] : o.children.filter((c) => c.isMesh));
 const root = await gltf.parser.getDependency('node', rootIndex);
 const levels = [meshesOf(root)];
+// A file whose first node has no mesh (the pieces' bones): every mesh in the scene is LOD0.
+if (!levels[0].length) gltf.scene.traverse((o) => { if (o.isMesh) levels[0].push(o); });
 for (const id of lod?.ids ?? []) {
   const node = await gltf.parser.getDependency('node', id);
   gltf.scene.add(node);
@@ -134,9 +136,13 @@ let level = 0, autoLevel = levels.length > 1;
 // Foliage as the glTF's leaf cards or as 2.5D impostors of its leaf clouds (cli/view_impostors.cpp).
 const params = new URLSearchParams(location.search);
 let impostors = null, foliage = 'cards';
+// The leaves of the full-detail view: LOD0's, or (pieces) the leaf meshes anywhere in the scene.
+const coarser = new Set(levels.slice(1).flat()), leafMeshes = [];
+gltf.scene.traverse((o) => { if (isLeafMesh(o) && !coarser.has(o)) leafMeshes.push(o); });
 const show = (k) => {
   level = k;
   const hidden = (m) => foliage === 'impostors' && isLeafMesh(m);
+  for (const m of leafMeshes) m.visible = !hidden(m);
   levels.forEach((ms, i) => ms.forEach((m) => { m.visible = i === k && !hidden(m); m.frustumCulled = false; }));
   if (impostors) impostors.group.visible = foliage === 'impostors';
   document.getElementById('info').textContent =
@@ -167,7 +173,7 @@ controls.target.copy(centre);
 controls.update();
 
 gltf.scene.updateMatrixWorld(true);
-const leafMeshes = levels[0].filter(isLeafMesh), clouds = foliageClouds(json);
+const clouds = foliageClouds(json);
 if (clouds.length && leafMeshes.length) {
   impostors = new FoliageImpostors(clouds, leafMeshes, [sky, sun]);
   scene.add(impostors.group);
