@@ -16,8 +16,8 @@
 //   ms per frame over 15 frames of each mode taking turns, GPU work included; software
 //   rendering on a shared machine, so only ratios mean something), networkRequests.
 // With --screenshots PREFIX it saves PREFIX_cards.png, PREFIX_impostors_a.png,
-// PREFIX_impostors_b.png (the two views) and PREFIX_pictures_a.png / _b.png (the offscreen
-// pictures side by side).
+// PREFIX_impostors_b.png (the two views), PREFIX_pictures_a.png / _b.png (the offscreen
+// pictures side by side) and PREFIX_figure.png (both views over their pictures).
 //   node view_impostors.js PAGE.html [--screenshots PREFIX]
 // Exit codes: 0 shown, 1 the page failed, 2 usage, 77 Chromium cannot run here.
 'use strict';
@@ -58,26 +58,53 @@ function install() {
       if (Math.abs(p[k] - q[k]) + Math.abs(p[k + 1] - q[k + 1]) + Math.abs(p[k + 2] - q[k + 2]) + Math.abs(p[k + 3] - q[k + 3]) > 16) n++;
     return n / (p.length / 4);
   });
-  // The pictures side by side on a white-and-grey checkerboard, as a PNG data URL.
-  window.__atlas = (pictures) => {
-    const sizes = pictures.map((p) => Math.round(Math.sqrt(p.length / 4)));
-    const cell = Math.max(...sizes), cols = Math.ceil(Math.sqrt(pictures.length));
+  // A 2D copy of the WebGL canvas (no page panels).
+  window.__copy = () => {
+    const c = document.createElement('canvas');
+    c.width = canvas.width;
+    c.height = canvas.height;
+    c.getContext('2d').drawImage(canvas, 0, 0);
+    return c;
+  };
+  // The two views over their impostors' pictures: the figure of docs/textures.md.
+  window.__figure = (viewA, viewB, atlasA, atlasB) => {
+    const crop = { x: viewA.width * 0.25, y: viewA.height * 0.12, w: viewA.width * 0.5, h: viewA.height * 0.76 };
+    const c = document.createElement('canvas');
+    c.width = 2 * crop.w;
+    c.height = crop.h + crop.w;
+    const ctx = c.getContext('2d');
+    ctx.fillStyle = '#fff';
+    ctx.fillRect(0, 0, c.width, c.height);
+    [viewA, viewB].forEach((v, i) => ctx.drawImage(v, crop.x, crop.y, crop.w, crop.h, i * crop.w, 0, crop.w, crop.h));
+    [atlasA, atlasB].forEach((a, i) => ctx.drawImage(a, i * crop.w + 4, crop.h + 4, crop.w - 8, crop.w - 8));
+    return c.toDataURL('image/png');
+  };
+  // The pictures side by side on a white-and-grey checkerboard, each scaled to a 128-pixel
+  // cell, as a canvas.
+  window.__atlasCanvas = (pictures) => {
+    const cell = 128, cols = Math.ceil(Math.sqrt(pictures.length));
     const c = document.createElement('canvas');
     c.width = cols * cell;
     c.height = Math.ceil(pictures.length / cols) * cell;
     const ctx = c.getContext('2d');
+    ctx.fillStyle = '#fff';
+    ctx.fillRect(0, 0, c.width, c.height);
     pictures.forEach((p, i) => {
-      const s = sizes[i], img = ctx.createImageData(s, s);
+      const s = Math.round(Math.sqrt(p.length / 4)), one = document.createElement('canvas');
+      one.width = one.height = s;
+      const img = one.getContext('2d').createImageData(s, s);
       for (let y = 0; y < s; y++) for (let x = 0; x < s; x++) {  // flip: WebGL rows go up
         const from = 4 * ((s - 1 - y) * s + x), to = 4 * (y * s + x), a = p[from + 3] / 255;
-        const bg = ((x >> 3) + (y >> 3)) % 2 ? 255 : 200;
+        const bg = (((x * 16) / s) ^ ((y * 16) / s)) & 1 ? 255 : 215;
         for (let k = 0; k < 3; k++) img.data[to + k] = p[from + k] * a + bg * (1 - a);
         img.data[to + 3] = 255;
       }
-      ctx.putImageData(img, (i % cols) * cell, Math.floor(i / cols) * cell);
+      one.getContext('2d').putImageData(img, 0, 0);
+      ctx.drawImage(one, (i % cols) * cell + 2, Math.floor(i / cols) * cell + 2, cell - 4, cell - 4);
     });
-    return c.toDataURL('image/png');
+    return c;
   };
+  window.__atlas = (pictures) => window.__atlasCanvas(pictures).toDataURL('image/png');
 }
 
 (async () => {
@@ -111,6 +138,7 @@ function install() {
         impostorTriangles: f.impostorTriangles, frameTrianglesImpostors: f.frameTriangles };
       window.__a = v.impostorPictures();
       window.__screenA = window.__screen();
+      window.__viewA = window.__copy();
       return out;
     });
     if (shots) await page.screenshot({ path: `${shots}_impostors_a.png` });
@@ -140,7 +168,12 @@ function install() {
       out.screenChange = differ / Math.max(drawn, 1);
       return out;
     }));
-    if (shots) await page.screenshot({ path: `${shots}_impostors_b.png` });
+    if (shots) {
+      await page.screenshot({ path: `${shots}_impostors_b.png` });
+      const url = await page.evaluate(() => window.__figure(window.__viewA, window.__copy(),
+        window.__atlasCanvas(window.__a), window.__atlasCanvas(window.ramusView.impostorPictures())));
+      fs.writeFileSync(`${shots}_figure.png`, Buffer.from(url.split(',')[1], 'base64'));
+    }
     await saveAtlas('pictures_b');
     Object.assign(r, await page.evaluate(() => {
       const v = window.ramusView, out = {};
