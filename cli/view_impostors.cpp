@@ -51,6 +51,7 @@ uniform sampler2D depthMap;
 uniform vec3 direction;
 uniform float radius;
 uniform mat4 viewProjection;
+uniform bool pictureDepth;  // false: the quad's own depth, to show what the picture's adds
 varying vec2 vUv;
 varying vec3 vWorld;
 void main() {
@@ -58,7 +59,7 @@ void main() {
   if (c.a < 0.5) discard;
   float z = texture2D(depthMap, vUv).r;
   vec4 clip = viewProjection * vec4(vWorld + direction * ((2.0 * z - 1.0) * radius), 1.0);
-  gl_FragDepth = clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
+  gl_FragDepth = pictureDepth ? clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0) : gl_FragCoord.z;
   gl_FragColor = vec4(c.rgb / c.a, 1.0);
   #include <tonemapping_fragment>
   #include <colorspace_fragment>
@@ -128,9 +129,10 @@ export class FoliageImpostors {
     this.refreshes = 0;          // offscreen renders so far
     this.refreshTriangles = 0;   // leaf triangles those renders drew
     this.viewProjection = { value: new THREE.Matrix4() };
+    this.pictureDepth = { value: true };
     this.cardTriangles = leafMeshes.reduce((t, m) => t + (m.geometry.index ? m.geometry.index.count : m.geometry.attributes.position.count) / 3, 0);
     const rest = restLeaves(leafMeshes);
-    const material = leafMeshes[0]?.material;
+    const material = leafMeshes[0]?.material;  // the pictures show every leaf in the first's
     // Each leaf triangle belongs to the cloud whose centre is nearest its own centre (the
     // writer's k-means assignment); a cloud's radius grows to hold all of its triangles.
     const members = clouds.map(() => []), reach = clouds.map((c) => c.radius);
@@ -149,7 +151,9 @@ export class FoliageImpostors {
     this.clouds = [];
     clouds.forEach((c, i) => {
       if (!members[i].length || !material) return;
-      const geometry = rest.geometry.clone();
+      // The cloud's triangles over the shared vertex buffers (one upload for all clouds).
+      const geometry = new THREE.BufferGeometry();
+      for (const [name, attribute] of Object.entries(rest.geometry.attributes)) geometry.setAttribute(name, attribute);
       geometry.setIndex(members[i]);
       const radius = reach[i] * 1.01;
       // sRGB texels: 8 bits per channel without banding in the shadows; sampling decodes them.
@@ -159,7 +163,7 @@ export class FoliageImpostors {
         uniforms: {
           colourMap: { value: target.texture }, depthMap: { value: target.depthTexture },
           direction: { value: new THREE.Vector3(0, 0, -1) }, radius: { value: radius },
-          viewProjection: this.viewProjection,
+          viewProjection: this.viewProjection, pictureDepth: this.pictureDepth,
         },
         vertexShader, fragmentShader,
       }));

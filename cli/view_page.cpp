@@ -289,6 +289,9 @@ window.ramusView = {
       impostorTriangles: impostors?.triangles ?? 0, refreshes: impostors?.refreshes ?? 0,
       frameTriangles: renderer.info.render.triangles };
   },
+  // false: the impostors' fragments keep their quad's depth instead of their picture's (a test
+  // measures what the 2.5D depth adds).
+  setPictureDepth(on) { if (impostors) impostors.pictureDepth.value = on; draw(); },
   // The impostors' offscreen pictures (RGBA bytes per cloud).
   impostorPictures() { return impostors ? impostors.pictures(renderer) : []; },
   // Median milliseconds per frame in each foliage mode over `count` frames of each, the modes

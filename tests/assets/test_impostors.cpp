@@ -1,8 +1,9 @@
 // 2.5D foliage impostors in the `ramus view` page (Burkus 6, cli/view_impostors.cpp), run in
 // headless Chromium by tests/assets/view_impostors.js on the demo tree: the impostors draw its
 // foliage with at most a tenth of the leaf cards' triangles, their offscreen pictures are
-// rendered again when the view turns (and only then) and differ between two views, and they
-// cover the screen where the leaf cards do. Frame times are printed, not checked (software
+// rendered again when the view turns (and only then) and differ between two views, they cover
+// the screen where the leaf cards do, and their per-texel depth hides and shows branches as the
+// cards do. Frame times are printed, not checked (software
 // rendering; bench numbers belong in the report).
 #include <catch2/catch.hpp>
 
@@ -58,8 +59,12 @@ TEST_CASE("the view page draws the demo tree's foliage as re-rendered 2.5D impos
   CHECK(r.at("pictureChange") > 0.2);
   CHECK(r.at("pictureReturn") < 0.01);
   CHECK(r.at("screenChange") > 0.2);
-  // The impostors stand where the leaves are.
+  // The impostors stand where the leaves are, and their depth comes from their pictures: where
+  // it decides between branch and leaf, it agrees with the leaf cards more often than the
+  // quads' flat depth does.
   CHECK(r.at("coverageIoU") > 0.7);
+  CHECK(r.at("depthChanged") > 0.005);
+  CHECK(r.at("depthAgrees") > r.at("flatAgrees") + 0.1);
   WARN("ms/frame (software WebGL): cards "
        << r.at("msCardsStill") << ", impostors " << r.at("msImpostorsStill") << " still, "
        << r.at("msImpostorsTurning") << " turning 5 degrees a frame");

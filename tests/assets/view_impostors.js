@@ -11,7 +11,10 @@
 //   of texels that differ), pictureReturn (the same after turning back to the first view: the
 //   pictures depend on the view only), screenChange (share of foliage pixels that differ between
 //   the screenshots of the two views), coverageIoU (drawn pixels of the impostors against those
-//   of the leaf cards at the first view), msCardsStill / msImpostorsStill, msCardsTurning /
+//   of the leaf cards at the first view), depthChanged (share of the drawn pixels that change
+//   between bark, leaf and background when the impostors take their quads' flat depth instead
+//   of their pictures'), depthAgrees / flatAgrees (how often, on those pixels, the impostors
+//   with the pictures' depth / the flat ones show what the leaf cards show), msCardsStill / msImpostorsStill, msCardsTurning /
 //   msImpostorsTurning (5 degrees a frame), msCardsFar / msImpostorsFar (4 times as far): median
 //   ms per frame over 15 frames of each mode taking turns, GPU work included; software
 //   rendering on a shared machine, so only ratios mean something), networkRequests.
@@ -48,6 +51,17 @@ function install() {
     for (let i = 0; i < out.length; i++)
       out[i] = Math.abs(px[4 * i] - 201) + Math.abs(px[4 * i + 1] - 214) + Math.abs(px[4 * i + 2] - 223) >= 24 ? 1 : 0;
     return out;
+  };
+  // Each pixel as 0 background, 1 bark (redder than green), 2 leaf (green).
+  window.__classes = (px) => {
+    const drawn = window.__drawn(px), out = new Uint8Array(drawn.length);
+    for (let i = 0; i < out.length; i++) out[i] = !drawn[i] ? 0 : px[4 * i] >= px[4 * i + 1] ? 1 : 2;
+    return out;
+  };
+  window.__iou = (a, b) => {
+    let both = 0, either = 0;
+    for (let i = 0; i < a.length; i++) { both += a[i] & b[i]; either += a[i] | b[i]; }
+    return both / Math.max(either, 1);
   };
   // Share of texels whose colour differs by more than 16 (sum over RGBA) per picture.
   window.__changes = (a, b) => a.map((p, i) => {
@@ -181,14 +195,30 @@ function install() {
       v.settle();
       const back = window.__changes(window.__a, v.impostorPictures());
       out.pictureReturn = back.reduce((s, c) => s + c, 0) / Math.max(back.length, 1);
-      const imp = window.__drawn(window.__screen());
+      const imp = window.__screen();
+      v.setPictureDepth(false);
+      const flat = window.__screen();
+      v.setPictureDepth(true);
       v.setFoliage('cards');
       const f = v.foliage();
       out.frameTrianglesCards = f.frameTriangles;
-      const cards = window.__drawn(window.__screen());
-      let both = 0, either = 0;
-      for (let i = 0; i < imp.length; i++) { both += imp[i] & cards[i]; either += imp[i] | cards[i]; }
-      out.coverageIoU = both / Math.max(either, 1);
+      const cards = window.__screen();
+      out.coverageIoU = window.__iou(window.__drawn(imp), window.__drawn(cards));
+      // Where branches and leaves hide each other: the pixels whose class (bark, leaf,
+      // background) changes when the impostors take their quads' flat depth instead of their
+      // pictures', and how often each of the two agrees there with the leaf cards.
+      const ci = window.__classes(imp), cf = window.__classes(flat), cc = window.__classes(cards);
+      let drawn = 0, changed = 0, depth = 0, flatAgree = 0;
+      for (let i = 0; i < ci.length; i++) {
+        if (ci[i] || cf[i]) drawn++;
+        if (ci[i] === cf[i]) continue;
+        changed++;
+        if (ci[i] === cc[i]) depth++;
+        if (cf[i] === cc[i]) flatAgree++;
+      }
+      out.depthChanged = changed / Math.max(drawn, 1);
+      out.depthAgrees = depth / Math.max(changed, 1);
+      out.flatAgrees = flatAgree / Math.max(changed, 1);
       return out;
     }));
     if (shots) await page.screenshot({ path: `${shots}_cards.png` });
