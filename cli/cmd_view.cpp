@@ -1,6 +1,7 @@
 // ramus view FILE -o PAGE.html [--lod N] [grammar options]
 // Writes a self-contained HTML page (cli/view_page.h) that shows a glTF asset in three.js with
-// orbit controls, a switch between its MSFT_lod levels and its wind animation playing. FILE is a
+// orbit controls, a switch between its MSFT_lod levels, its wind animation playing and a switch
+// between leaf cards and 2.5D foliage impostors (cli/view_impostors.cpp). FILE is a
 // .glb, a .gltf (its .bin and images go into the page too) or a grammar, which is built first as
 // `ramus build FILE --lod N --wind --compress meshopt` would build it (docs/mesh.md).
 #include <filesystem>

@@ -80,6 +80,7 @@ const char* kViewer = R"JS(
 import * as THREE from 'three';
 import { GLTFLoader } from 'three/examples/jsm/loaders/GLTFLoader.js';
 import { OrbitControls } from 'three/examples/jsm/controls/OrbitControls.js';
+import { FoliageImpostors, foliageClouds, isLeafMesh } from 'ramus/impostors.js';
 const bytes = (b64) => Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
 const files = JSON.parse(document.getElementById('files').textContent);
 const urls = {};
@@ -107,7 +108,8 @@ document.body.appendChild(renderer.domElement);
 const background = new THREE.Color(0xc9d6df);
 const scene = new THREE.Scene();
 scene.background = background;
-scene.add(new THREE.HemisphereLight(0xffffff, 0x6b5a45, 2.0));
+const sky = new THREE.HemisphereLight(0xffffff, 0x6b5a45, 2.0);
+scene.add(sky);
 const sun = new THREE.DirectionalLight(0xffffff, 2.0);
 sun.position.set(3, 10, 6);
 scene.add(sun);
@@ -122,6 +124,8 @@ const coverage = json.nodes[rootIndex].extras?.MSFT_screencoverage ?? [];
 const meshesOf = (o) => (o.isMesh ? [o] : o.children.filter((c) => c.isMesh));
 const root = await gltf.parser.getDependency('node', rootIndex);
 const levels = [meshesOf(root)];
+// A file whose first node has no mesh (the pieces' bones): every mesh in the scene is LOD0.
+if (!levels[0].length) gltf.scene.traverse((o) => { if (o.isMesh) levels[0].push(o); });
 for (const id of lod?.ids ?? []) {
   const node = await gltf.parser.getDependency('node', id);
   gltf.scene.add(node);
@@ -129,11 +133,20 @@ for (const id of lod?.ids ?? []) {
 }
 const triangles = (ms) => ms.reduce((n, m) => n + (m.geometry.index ? m.geometry.index.count : m.geometry.attributes.position.count) / 3, 0);
 let level = 0, autoLevel = levels.length > 1;
+// Foliage as the glTF's leaf cards or as 2.5D impostors of its leaf clouds (cli/view_impostors.cpp).
+const params = new URLSearchParams(location.search);
+let impostors = null, foliage = 'cards';
+// The leaves of the full-detail view: LOD0's, or (pieces) the leaf meshes anywhere in the scene.
+const coarser = new Set(levels.slice(1).flat()), leafMeshes = [];
+gltf.scene.traverse((o) => { if (isLeafMesh(o) && !coarser.has(o)) leafMeshes.push(o); });
 const show = (k) => {
   level = k;
-  levels.forEach((ms, i) => ms.forEach((m) => { m.visible = i === k; m.frustumCulled = false; }));
+  const hidden = (m) => foliage === 'impostors' && isLeafMesh(m);
+  for (const m of leafMeshes) m.visible = !hidden(m);
+  levels.forEach((ms, i) => ms.forEach((m) => { m.visible = i === k && !hidden(m); m.frustumCulled = false; }));
+  if (impostors) impostors.group.visible = foliage === 'impostors';
   document.getElementById('info').textContent =
-    `LOD${k}: ${triangles(levels[k]).toLocaleString('en')} triangles`;
+    `LOD${k}: ${triangles(levels[k].filter((m) => m.visible)).toLocaleString('en')} triangles`;
 };
 const panel = document.getElementById('lods');
 const choices = levels.length > 1 ? ['auto', ...levels.map((_, k) => k)] : [];
@@ -159,6 +172,24 @@ const controls = new OrbitControls(camera, renderer.domElement);
 controls.target.copy(centre);
 controls.update();
 
+gltf.scene.updateMatrixWorld(true);
+const clouds = foliageClouds(json);
+if (clouds.length && leafMeshes.length) {
+  impostors = new FoliageImpostors(clouds, leafMeshes, [sky, sun]);
+  scene.add(impostors.group);
+  if (params.get('foliage') === 'impostors') foliage = 'impostors';
+} else {
+  document.getElementById('foliage').style.display = 'none';
+}
+const setFoliage = (mode) => {
+  foliage = impostors && mode === 'impostors' ? 'impostors' : 'cards';
+  document.getElementById('foliage').textContent =
+    foliage === 'impostors' ? 'show leaf cards' : 'show impostors';
+  show(level);
+};
+document.getElementById('foliage').onclick = () => setFoliage(foliage === 'cards' ? 'impostors' : 'cards');
+setFoliage(foliage);
+
 const mixer = new THREE.AnimationMixer(gltf.scene);
 const wind = document.getElementById('wind');
 if (gltf.animations.length) mixer.clipAction(gltf.animations[0]).play();
@@ -176,6 +207,37 @@ const screenCoverage = () => {
   const d = camera.position.distanceTo(centre);
   return radius / (d * Math.tan((camera.fov * Math.PI) / 360));
 };
+// One frame: the impostors whose view turned are rendered again, then the scene.
+const draw = () => {
+  if (impostors && foliage === 'impostors') {
+    gltf.scene.updateMatrixWorld();
+    impostors.update(renderer, camera);
+  }
+  renderer.render(scene, camera);
+};
+// Frame time with the GPU's work included (reading one pixel waits for it), and the triangles
+// the scene's pass drew, per foliage mode.
+const gl = renderer.getContext(), pixel = new Uint8Array(4);
+const timed = { cards: {}, impostors: {} };
+const timedDraw = () => {
+  const t0 = performance.now();
+  draw();
+  gl.readPixels(0, 0, 1, 1, gl.RGBA, gl.UNSIGNED_BYTE, pixel);
+  const ms = performance.now() - t0, t = timed[foliage];
+  t.ms = t.ms === undefined ? ms : 0.9 * t.ms + 0.1 * ms;
+  t.triangles = renderer.info.render.triangles;
+  return ms;
+};
+const fmt = (n) => Math.round(n).toLocaleString('en');
+const showTimes = () => {
+  if (!impostors) return;
+  const line = (name, t, tris) => `${name}: ${fmt(tris)} foliage triangles, ` +
+    (t.ms === undefined ? 'not drawn yet' : `${t.ms.toFixed(1)} ms/frame, ${fmt(t.triangles)} in the frame`);
+  document.getElementById('times').innerHTML = line('leaf cards', timed.cards, impostors.cardTriangles) +
+    '<br>' + line(`impostors (${impostors.clouds.length} clouds)`, timed.impostors, impostors.triangles) +
+    `<br>${fmt(impostors.refreshes)} impostor renders, ${fmt(impostors.refreshTriangles)} leaf triangles in them`;
+};
+let frames = 0;
 function frame() {
   timer.update();
   if (playing && wind.checked) mixer.update(timer.getDelta());
@@ -186,9 +248,20 @@ function frame() {
     if (k !== level) show(k);
   }
   controls.update();
-  renderer.render(scene, camera);
+  timedDraw();
+  if (++frames % 15 === 0) showTimes();
 }
 renderer.setAnimationLoop(frame);
+
+// The camera on its orbit around the tree's middle: turned by azimuth (degrees, about y, 0 is
+// the front), raised by elevation, at `distance` times the distance that frames the tree.
+const framing = camera.position.distanceTo(controls.target);
+const place = (azimuth, elevation, distance = 1) => {
+  const d = framing * distance, a = (azimuth * Math.PI) / 180, e = (elevation * Math.PI) / 180;
+  camera.position.set(Math.sin(a) * Math.cos(e), Math.sin(e), Math.cos(a) * Math.cos(e)).multiplyScalar(d).add(controls.target);
+  camera.lookAt(controls.target);
+  controls.update();
+};
 
 // For tests and scripts: pick a level, stop the wind at a time, and measure the picture.
 window.ramusView = {
@@ -199,12 +272,54 @@ window.ramusView = {
     autoLevel = false;
     show(k);
     for (const r of document.getElementsByName('lod')) r.checked = r.value === String(k);
-    renderer.render(scene, camera);
+    draw();
   },
-  setTime(t) { playing = false; mixer.setTime(t); renderer.render(scene, camera); },
+  setTime(t) { playing = false; mixer.setTime(t); draw(); },
+  setFoliage(mode) { setFoliage(mode); draw(); },
+  orbit(azimuth, elevation, distance = 1) { place(azimuth, elevation, distance); draw(); },
+  // Frames until every impostor picture is up to date (the budget spreads a big turn over a few).
+  settle() {
+    let n = 0;
+    do { draw(); n++; } while (impostors && foliage === 'impostors' && impostors.pending > 0 && n < 100);
+    return n;
+  },
+  // The foliage mode and its numbers; frameTriangles: what the last frame's scene pass drew.
+  foliage() {
+    return { mode: foliage, clouds: impostors?.clouds.length ?? 0, cardTriangles: impostors?.cardTriangles ?? 0,
+      impostorTriangles: impostors?.triangles ?? 0, refreshes: impostors?.refreshes ?? 0,
+      frameTriangles: renderer.info.render.triangles };
+  },
+  // false: the impostors' fragments keep their quad's depth instead of their picture's (a test
+  // measures what the 2.5D depth adds).
+  setPictureDepth(on) { if (impostors) impostors.pictureDepth.value = on; draw(); },
+  // The impostors' offscreen pictures (RGBA bytes per cloud).
+  impostorPictures() { return impostors ? impostors.pictures(renderer) : []; },
+  // Median milliseconds per frame in each foliage mode over `count` frames of each, the modes
+  // taking turns frame by frame (so both see the same load on a shared machine); the camera
+  // turns by `step` degrees every other frame (0: still; beyond the threshold the impostors are
+  // rendered again) from 10 degrees above, at `distance` times the framing distance.
+  measure(count, step = 0, distance = 1) {
+    const home = camera.position.clone(), mode = foliage;
+    const ms = { cards: [], impostors: [] }, tris = {};
+    for (let i = -2; i < count; i++) {
+      place(i * step, 10, distance);
+      for (const m of ['cards', 'impostors']) {
+        setFoliage(m);
+        const t = timedDraw();
+        if (i >= 0) ms[m].push(t);
+        tris[m] = renderer.info.render.triangles;
+      }
+    }
+    const median = (a) => a.sort((x, y) => x - y)[a.length >> 1];
+    camera.position.copy(home);
+    controls.update();
+    setFoliage(mode);
+    draw();
+    return { cards: { ms: median(ms.cards), triangles: tris.cards },
+      impostors: { ms: median(ms.impostors), triangles: tris.impostors } };
+  },
   stats() {
-    renderer.render(scene, camera);
-    const gl = renderer.getContext();
+    draw();
     const w = gl.drawingBufferWidth, h = gl.drawingBufferHeight;
     const px = new Uint8Array(w * h * 4);
     gl.readPixels(0, 0, w, h, gl.RGBA, gl.UNSIGNED_BYTE, px);
@@ -280,6 +395,7 @@ std::string view_page(const ViewAsset& asset, const std::string& three) {
     collect(root, m, modules);
   if (draco) collect(root, "examples/jsm/loaders/DRACOLoader.js", modules);
   if (meshopt) collect(root, "examples/jsm/libs/meshopt_decoder.module.js", modules);
+  modules["ramus/impostors.js"] = view_impostors_module();
   std::map<std::string, std::string> files = asset.files;
   if (draco) {
     const fs::path d = root / "examples/jsm/libs/draco/gltf";
@@ -291,8 +407,9 @@ std::string view_page(const ViewAsset& asset, const std::string& three) {
                      read_file_bytes((root / "LICENSE").string()) + "\n-->\n";
   page += "<html><head><meta charset=\"utf-8\"><title>" + html_escape(asset.name) +
           " - ramus view</title>\n<style>html,body{margin:0;height:100%;overflow:hidden;"
-          "font:13px sans-serif}#panel{position:absolute;top:8px;left:8px;padding:6px 10px;"
-          "background:rgba(255,255,255,.85);border-radius:4px}canvas{display:block}</style>\n"
+          "font:13px sans-serif}#panel,#times{position:absolute;left:8px;padding:6px 10px;"
+          "background:rgba(255,255,255,.85);border-radius:4px}#panel{top:8px}#times{bottom:8px;"
+          "font-size:12px}#times:empty{display:none}canvas{display:block}</style>\n"
           "<script type=\"importmap\">{\"imports\":{";
   bool first = true;
   for (const auto& [name, source] : modules) {
@@ -302,7 +419,8 @@ std::string view_page(const ViewAsset& asset, const std::string& three) {
   }
   page += "}}</script>\n</head><body>\n<div id=\"panel\"><b>" + html_escape(asset.name) +
           "</b> <span id=\"info\"></span><div id=\"lods\"></div><label><input type=\"checkbox\" "
-          "id=\"wind\" checked> wind</label></div>\n";
+          "id=\"wind\" checked> wind</label> <button id=\"foliage\"></button>"
+          "</div><div id=\"times\"></div>\n";
   if (meshopt) page += "<meta id=\"meshopt\">\n";
   page += "<script id=\"asset\" type=\"application/octet-stream\" data-kind=\"" +
           std::string(asset.binary ? "glb" : "gltf") + "\">" + base64(asset.main) + "</script>\n";

@@ -20,6 +20,10 @@ struct ViewAsset {
 // tools/node_modules/three. Throws UserError when three.js is not there.
 std::string three_dir();
 
+// The page's module of 2.5D foliage impostors (cli/view_impostors.cpp), imported as
+// 'ramus/impostors.js'.
+const char* view_impostors_module();
+
 // The page. Throws UserError when a module of three.js cannot be read.
 std::string view_page(const ViewAsset& asset, const std::string& three);
 

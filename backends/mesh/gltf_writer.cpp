@@ -12,6 +12,7 @@
 #include <limits>
 #include <sstream>
 
+#include "backends/mesh/foliage_clouds.h"
 #include "backends/mesh/gltf_buffer_builder.h"
 #include "backends/mesh/gltf_container.h"
 #include "backends/mesh/leaf_shape.h"
@@ -44,6 +45,26 @@ void place_node(tinygltf::Node& node, const Vec3& origin) {
 // down to half the coverage of the level before; the coarsest level is never switched off (0:
 // culling a distant tree is the engine's own distance rule).
 double screen_coverage(int k, int n) { return k + 1 == n ? 0.0 : std::ldexp(0.5, -k); }
+
+// The leaf clouds of LOD0 (foliage_clouds.h) as {"clouds": [{"centre": [x,y,z], "radius": r}]}
+// in the scene's frame (y up, the local origin added), rounded to 0.1 mm (radii up, so every
+// leaf stays inside) to keep the JSON short: issue 17's Draco size budget has little room.
+tinygltf::Value foliage_extras(const TreeMesh& lod0) {
+  auto tenth_mm = [](double v) { return std::round(v * 1e4) / 1e4; };
+  tinygltf::Value::Array clouds;
+  for (const FoliageCloud& c : foliage_clouds(lod0.leaves)) {
+    const Vec3 p = z_up_to_y_up(lod0.origin + c.centre);
+    tinygltf::Value::Object cloud;
+    cloud["centre"] = tinygltf::Value(tinygltf::Value::Array{tinygltf::Value(tenth_mm(p.x)),
+                                                             tinygltf::Value(tenth_mm(p.y)),
+                                                             tinygltf::Value(tenth_mm(p.z))});
+    cloud["radius"] = tinygltf::Value(std::ceil(c.radius * 1e4) / 1e4);
+    clouds.emplace_back(std::move(cloud));
+  }
+  tinygltf::Value::Object foliage;
+  foliage["clouds"] = tinygltf::Value(std::move(clouds));
+  return tinygltf::Value(std::move(foliage));
+}
 
 class ModelBuilder : public GltfBufferBuilder {
  public:
@@ -262,6 +283,9 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
   // origin moves to the root joints.
   if (rig.empty()) place_node(root, lods.front().origin);
   model.nodes.push_back(root);
+  tinygltf::Value::Object extras;
+  // The leaf clouds for 2.5D impostors (Burkus 6), for an engine to draw as `ramus view` does.
+  if (!lods.front().leaves.empty()) extras["ramus_foliage"] = foliage_extras(lods.front());
   if (lods.size() > 1) {
     tinygltf::Value::Array ids, coverage;
     for (std::size_t k = 0; k < lods.size(); ++k) {
@@ -274,13 +298,13 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
       model.nodes.push_back(level);
       ids.emplace_back(int(k));
     }
-    tinygltf::Value::Object ext, extras;
+    tinygltf::Value::Object ext;
     ext["ids"] = tinygltf::Value(std::move(ids));
     extras["MSFT_screencoverage"] = tinygltf::Value(std::move(coverage));
     model.nodes[0].extensions["MSFT_lod"] = tinygltf::Value(std::move(ext));
-    model.nodes[0].extras = tinygltf::Value(std::move(extras));
     model.extensionsUsed.push_back("MSFT_lod");
   }
+  if (!extras.empty()) model.nodes[0].extras = tinygltf::Value(std::move(extras));
   const std::vector<int> joint_roots =
       rig.empty() ? std::vector<int>{} : add_wind(b, rig, lods.front().origin, int(lods.size()));
   tinygltf::Scene scene;
