@@ -40,7 +40,10 @@ for g in "${grammars[@]}"; do
   name="$(basename "${g%.ramus}")"
   "$ramus" -q build "$g" --target binary -o "$work/$name.rmb"
   "$ramus" -q build "$g" --target binary --zstd -o "$work/$name.z.rmb"
-  "$ramus" -q build "$g" -o "$work/$name.glb"
+  if ! "$ramus" -q build "$g" -o "$work/$name.glb" 2>"$work/build.log"; then
+    echo "skipped $g: ramus build made no mesh: $(head -1 "$work/build.log")" >&2
+    continue
+  fi
   "$ramus" -q build "$g" --compress draco -o "$work/$name.draco.glb"
   "$ramus" -q build "$g" --compress meshopt -o "$work/$name.meshopt.glb"
   # "X.rmb: N nodes, M organs; LOD0 V vertices T triangles; grow A ms, mesh B ms"
@@ -49,7 +52,7 @@ for g in "${grammars[@]}"; do
   triangles="$(sed -E 's/.*LOD0 [0-9]+ vertices ([0-9]+) triangles.*/\1/' <<<"$line")"
   grow="$(sed -E 's/.*grow ([0-9.]+) ms.*/\1/' <<<"$line")"
   mesh="$(sed -E 's/.*mesh ([0-9.]+) ms.*/\1/' <<<"$line")"
-  printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %.1f | %.1f |\n' "${g#examples/}" \
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s | %s | %.2f | %.2f |\n' "${g#examples/}" \
     "$nodes" "$triangles" "$(size "$work/$name.rmb")" "$(size "$work/$name.z.rmb")" \
     "$(size "$work/$name.glb")" "$(size "$work/$name.draco.glb")" \
     "$(size "$work/$name.meshopt.glb")" "$(pictures "$work/$name.glb")" "$grow" "$mesh"
