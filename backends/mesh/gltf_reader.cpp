@@ -14,8 +14,8 @@
 
 #include "backends/mesh/gltf_accessors.h"
 #include "backends/mesh/mesh_reader.h"
-#include "backends/mesh/up_axis.h"
 #include "core/input_file.h"
+#include "mesh/up_axis.h"
 
 namespace ramus::mesh {
 namespace {
