@@ -12,7 +12,7 @@
 #include <cstring>
 #include <string>
 
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "compiler/grow.h"
 #include "formats/point_cloud_io.h"
 #include "reconstruct/flood/flood_skeleton.h"

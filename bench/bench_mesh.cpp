@@ -8,9 +8,9 @@
 #include <string>
 
 #include "backends/mesh/gltf_writer.h"
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "core/atomic_file.h"
-#include "tests/backends/synthetic_tree.h"
+#include "tests/mesh/synthetic_tree.h"
 
 int main(int argc, char** argv) {
   using clock = std::chrono::steady_clock;

@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "backends/mesh/gltf_writer.h"
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "backends/pieces/gltf_pieces.h"
 #include "backends/pieces/output_instance_buffer.h"
 #include "backends/pieces/output_layout.h"

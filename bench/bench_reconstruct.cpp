@@ -19,7 +19,7 @@
 #include <filesystem>
 #include <string>
 
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "compiler/grow.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"

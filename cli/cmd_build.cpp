@@ -11,16 +11,17 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 
 #include "backends/mesh/gltf_writer.h"
 #include "backends/mesh/openmesh_writer.h"
-#include "backends/mesh/tree_mesh.h"
 #include "backends/texture/bark_maps.h"
 #include "cli/build_binary.h"
 #include "cli/build_pieces.h"
 #include "cli/grow_args.h"
 #include "cli/mesh_output.h"
 #include "cli/output_path.h"
+#include "mesh/tree_mesh.h"
 
 namespace ramus::cli {
 namespace {
@@ -107,20 +108,20 @@ mesh::GltfCompression compression(const std::string& name) {
 // Writes the levels, each to its own file (--lod-files) or together; returns the triangles of
 // the finest level written.
 std::size_t write_levels(const std::vector<mesh::TreeMesh>& lods, const BuildArgs& a,
-                         mesh::UpAxis up, bool gltf) {
+                         mesh::UpAxis up, bool gltf, const texture::BarkTextures* bark) {
   if (a.lod_files) {
     for (std::size_t k = 0; k < lods.size(); ++k) {
       const std::string path = lod_file_path(a.output, int(k));
       if (gltf) {
-        mesh::write_gltf({lods[k]}, path, compression(a.compress));
+        mesh::write_gltf({lods[k]}, path, compression(a.compress), bark);
       } else {
-        mesh::write_openmesh(lods[k], path, up);
+        mesh::write_openmesh(lods[k], path, up, bark);
       }
     }
   } else if (gltf) {
-    mesh::write_gltf(lods, a.output, compression(a.compress));
+    mesh::write_gltf(lods, a.output, compression(a.compress), bark);
   } else {
-    mesh::write_openmesh(lods.back(), a.output, up);
+    mesh::write_openmesh(lods.back(), a.output, up, bark);
   }
   return gltf || a.lod_files ? lods.front().triangle_count() : lods.back().triangle_count();
 }
@@ -170,13 +171,11 @@ int run_build(const BuildArgs& a, const GlobalOptions& global) {
       lods.push_back(mesh::build_tree_mesh(*skeleton, o, a.lod, &report));
     }
     print_warnings(report);
-    if (!a.bark.empty()) {
-      auto textures = std::make_shared<const texture::BarkTextures>(bark_textures_of(a));
-      for (mesh::TreeMesh& m : lods) m.bark_textures = textures;
-    }
+    std::optional<texture::BarkTextures> bark;
+    if (!a.bark.empty()) bark = bark_textures_of(a);
     if (o.wind && lods.front().wind_rig.animated_joints() == 0)
       throw UserError("--wind: the tree has no branch long enough to sway");
-    triangles = write_levels(lods, a, up, gltf);
+    triangles = write_levels(lods, a, up, gltf, bark ? &*bark : nullptr);
   } catch (const mesh::MeshError& e) {
     throw UserError(e.what());
   }

@@ -17,7 +17,7 @@
 
 #include "backends/mesh/gltf_writer.h"
 #include "backends/mesh/openmesh_writer.h"
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "cli/command.h"
 #include "cli/mesh_output.h"
 #include "cli/output_path.h"

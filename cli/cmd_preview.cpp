@@ -11,7 +11,7 @@
 #include <stdexcept>
 
 #include "backends/mesh/mesh_reader.h"
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "backends/preview/point_preview.h"
 #include "backends/preview/preview.h"
 #include "cli/grow_args.h"

@@ -16,7 +16,7 @@
 
 #include "backends/mesh/gltf_writer.h"
 #include "backends/mesh/openmesh_writer.h"
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "cli/grow_args.h"
 #include "cli/mesh_output.h"
 #include "cli/output_path.h"

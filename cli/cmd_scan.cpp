@@ -11,7 +11,7 @@
 #include <filesystem>
 #include <memory>
 
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "backends/scanner/forest.h"
 #include "backends/scanner/scanner.h"
 #include "cli/grow_args.h"

@@ -8,7 +8,7 @@
 #include <regex>
 
 #include "backends/mesh/gltf_writer.h"
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "cli/grow_args.h"
 #include "cli/output_path.h"
 #include "cli/read_file.h"

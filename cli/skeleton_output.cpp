@@ -4,7 +4,7 @@
 
 #include "backends/mesh/gltf_writer.h"
 #include "backends/mesh/openmesh_writer.h"
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "cli/command.h"
 #include "formats/skeleton_json.h"
 

@@ -2,7 +2,7 @@
 // Every buffer view starts on a 4-byte boundary, attribute views carry the ARRAY_BUFFER target and
 // index views ELEMENT_ARRAY_BUFFER, and every accessor has exact min/max (taken from the float
 // values written), which is what the Khronos glTF-Validator checks. The z-up world becomes glTF's
-// y up here, in add_part and place_node, through backends/mesh/up_axis.h.
+// y up here, in add_part and place_node, through mesh/up_axis.h.
 #include "backends/mesh/gltf_writer.h"
 
 #include <tiny_gltf.h>
@@ -15,21 +15,12 @@
 #include "backends/mesh/gltf_buffer_builder.h"
 #include "backends/mesh/gltf_container.h"
 #include "backends/mesh/leaf_shape.h"
-#include "backends/mesh/tangents.h"
-#include "backends/mesh/up_axis.h"
 #include "backends/texture/bark_maps.h"
+#include "mesh/up_axis.h"
+#include "mesh/vertex_arrays.h"
 
 namespace ramus::mesh {
 namespace {
-
-// Positions and normals of the z-up mesh as glTF's y-up wants them (an exact permutation and sign
-// change of the floats, so nothing is rounded again).
-std::vector<Vec3f> y_up(const std::vector<Vec3f>& v) {
-  std::vector<Vec3f> out;
-  out.reserve(v.size());
-  for (const Vec3f& p : v) out.push_back(z_up_to_y_up(p));
-  return out;
-}
 
 // The local origin of a georeferenced mesh as the node's translation (glTF stores it as a JSON
 // double, so nothing is lost); nothing for a mesh at the world origin.
@@ -131,19 +122,17 @@ class ModelBuilder : public GltfBufferBuilder {
     tinygltf::Primitive prim;
     prim.mode = TINYGLTF_MODE_TRIANGLES;
     prim.material = material;
-    const std::vector<Vec3f> positions = y_up(part.positions), normals = y_up(part.normals);
-    prim.attributes["POSITION"] = add_float_attribute(positions, 3, TINYGLTF_TYPE_VEC3);
-    prim.attributes["NORMAL"] = add_float_attribute(normals, 3, TINYGLTF_TYPE_VEC3);
+    // The arrays the runtime hands out too (mesh/vertex_arrays.h); the bark's normal map needs
+    // the tangents.
+    const VertexArrays v = vertex_arrays(part, UpAxis::kY, tangents);
+    const std::size_t n = part.vertex_count();
+    prim.attributes["POSITION"] = add_floats(v.positions.data(), n, 3, TINYGLTF_TYPE_VEC3,
+                                             TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    prim.attributes["NORMAL"] =
+        add_floats(v.normals.data(), n, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
     prim.attributes["TEXCOORD_0"] = add_float_attribute(part.uvs, 2, TINYGLTF_TYPE_VEC2);
     if (tangents) {
-      // The bark's normal map needs them (tangents.h).
-      auto flat = [](const auto& v, std::size_t comps) {
-        const float* f = reinterpret_cast<const float*>(v.data());
-        return std::vector<float>(f, f + v.size() * comps);
-      };
-      const std::vector<float> t =
-          vertex_tangents(flat(positions, 3), flat(normals, 3), flat(part.uvs, 2), part.indices);
-      prim.attributes["TANGENT"] = add_floats(t.data(), t.size() / 4, 4, TINYGLTF_TYPE_VEC4,
+      prim.attributes["TANGENT"] = add_floats(v.tangents.data(), n, 4, TINYGLTF_TYPE_VEC4,
                                               TINYGLTF_TARGET_ARRAY_BUFFER, true);
     }
     prim.attributes["_WIND"] = add_float_attribute(part.wind, 4, TINYGLTF_TYPE_VEC4);
@@ -224,7 +213,8 @@ std::vector<int> add_wind(ModelBuilder& b, const WindRig& rig, const Vec3& origi
   return roots;
 }
 
-void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
+void build_model(const std::vector<TreeMesh>& lods, const texture::BarkTextures* bark_textures,
+                 ModelBuilder& b) {
   bool any_bark = false, any_leaves = false, any_surfaces = false;
   for (const TreeMesh& m : lods) {
     any_bark = any_bark || !m.bark.empty();
@@ -235,7 +225,7 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
     throw MeshError("nothing to write: the tree has no geometry");
   }
   const texture::BarkTextures& textures =
-      lods.front().bark_textures ? *lods.front().bark_textures : texture::bundled_bark_textures();
+      bark_textures ? *bark_textures : texture::bundled_bark_textures();
   const int bark = any_bark ? b.add_material("bark", false, textures) : -1;
   const int leaf = any_leaves ? b.add_material("leaf", true, textures) : -1;
   const int surface = any_surfaces ? b.add_surface_material() : -1;
@@ -298,10 +288,10 @@ void build_model(const std::vector<TreeMesh>& lods, ModelBuilder& b) {
 }  // namespace
 
 GltfBytes encode_gltf(const std::vector<TreeMesh>& lods, bool binary, const std::string& bin_uri,
-                      GltfCompression compression) {
+                      GltfCompression compression, const texture::BarkTextures* bark) {
   if (lods.empty()) throw MeshError("nothing to write: no meshes");
   ModelBuilder b;
-  build_model(lods, b);
+  build_model(lods, bark, b);
   GltfBytes out;
   if (!binary) out.bin.assign(b.model().buffers[0].data.begin(), b.model().buffers[0].data.end());
   std::ostringstream glb;
@@ -334,9 +324,9 @@ GltfBytes encode_gltf(const std::vector<TreeMesh>& lods, bool binary, const std:
 }
 
 void write_gltf(const std::vector<TreeMesh>& lods, const std::string& path,
-                GltfCompression compression) {
+                GltfCompression compression, const texture::BarkTextures* bark) {
   const bool written = write_gltf_files(path, [&](bool binary, const std::string& bin_uri) {
-    return encode_gltf(lods, binary, bin_uri, compression);
+    return encode_gltf(lods, binary, bin_uri, compression, bark);
   });
   if (!written) throw MeshError("a glTF file name must end in .glb or .gltf: " + path);
 }

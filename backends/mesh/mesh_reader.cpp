@@ -6,7 +6,7 @@
 #include <filesystem>
 #include <limits>
 
-#include "backends/mesh/local_origin.h"
+#include "mesh/local_origin.h"
 
 namespace ramus::mesh {
 

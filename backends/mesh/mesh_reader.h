@@ -15,7 +15,7 @@
 #include <utility>
 #include <vector>
 
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 
 namespace ramus::mesh {
 

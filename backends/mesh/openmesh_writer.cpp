@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "backends/mesh/leaf_shape.h"
+#include "backends/texture/bark_maps.h"
 #include "core/atomic_file.h"
 #include "core/number_text.h"
 
@@ -120,13 +121,15 @@ std::string obj_material_library(const std::string& stem) {
          "_bark_normal.jpg\n\n"
          "newmtl leaf\nKa 0 0 0\nKd 0.92 1 0.9\nKs 0.05 0.05 0.05\nNs 16\nd 1\nillum 2\n"
          "map_Kd " +
-         stem + "_leaf.png\nmap_d " + stem + "_leaf.png\n\n"
+         stem + "_leaf.png\nmap_d " + stem +
+         "_leaf.png\n\n"
          // The polygon organs (ABOP `{ . }`) stay untextured: their UVs are planar, for a user's
          // own texture.
          "newmtl surface\nKa 0 0 0\nKd 0.275 0.529 0.176\nKs 0.05 0.05 0.05\nNs 16\nd 1\nillum 2\n";
 }
 
-void write_openmesh(const TreeMesh& mesh, const std::string& path, UpAxis up) {
+void write_openmesh(const TreeMesh& mesh, const std::string& path, UpAxis up,
+                    const texture::BarkTextures* bark_textures) {
   if (mesh.bark.empty() && mesh.leaves.empty() && mesh.surfaces.empty())
     throw MeshError("nothing to write: the tree has no geometry");
   const std::filesystem::path p(path);
@@ -148,7 +151,7 @@ void write_openmesh(const TreeMesh& mesh, const std::string& path, UpAxis up) {
   const std::string obj = write_to_string(to_openmesh(mesh, up), ".obj", opt);
   const std::string stem = p.stem().string();
   const texture::BarkTextures& bark =
-      mesh.bark_textures ? *mesh.bark_textures : texture::bundled_bark_textures();
+      bark_textures ? *bark_textures : texture::bundled_bark_textures();
   auto beside = [&](const std::string& name) { return (p.parent_path() / name).string(); };
   write_file_atomically(beside(stem + "_bark.jpg"), bark.base);
   write_file_atomically(beside(stem + "_bark_height.jpg"), bark.height);

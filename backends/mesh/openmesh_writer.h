@@ -10,14 +10,20 @@
 
 #include <string>
 
-#include "backends/mesh/tree_mesh.h"
-#include "backends/mesh/up_axis.h"
+#include "mesh/tree_mesh.h"
+#include "mesh/up_axis.h"
+
+namespace ramus::texture {
+struct BarkTextures;
+}
 
 namespace ramus::mesh {
 
 // Writes `path` (.obj, plus <stem>.mtl beside it; or .ply) atomically. Throws MeshError for an
-// empty mesh or an unknown extension, WriteError when a file cannot be written.
-void write_openmesh(const TreeMesh& mesh, const std::string& path, UpAxis up);
+// empty mesh or an unknown extension, WriteError when a file cannot be written. `bark_textures`:
+// the bark pictures written beside an OBJ (docs/textures.md); null for the bundled tile set's.
+void write_openmesh(const TreeMesh& mesh, const std::string& path, UpAxis up,
+                    const texture::BarkTextures* bark_textures = nullptr);
 
 // The MTL text `write_openmesh` puts beside an OBJ named STEM.obj: bark with map_Kd
 // STEM_bark.jpg, bump STEM_bark_height.jpg (a height map, as MTL's bump means) and norm

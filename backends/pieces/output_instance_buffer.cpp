@@ -7,7 +7,7 @@
 #include <cstring>
 #include <filesystem>
 
-#include "backends/mesh/up_axis.h"
+#include "mesh/up_axis.h"
 #include "core/atomic_file.h"
 
 namespace ramus::pieces {

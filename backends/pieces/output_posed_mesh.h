@@ -4,7 +4,7 @@
 // gap at a joint shows in the picture.
 #pragma once
 
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "backends/pieces/pieces.h"
 
 namespace ramus::pieces {

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 
 namespace ramus::preview {
 

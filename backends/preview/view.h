@@ -3,7 +3,7 @@
 
 #include <array>
 
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "backends/preview/raster.h"
 
 namespace ramus::preview {

@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 #include "backends/scanner/bvh.h"
 #include "core/rng.h"
 

@@ -9,7 +9,7 @@
 
 #include "backends/mesh/openmesh_writer.h"
 #include "core/atomic_file.h"
-#include "tests/backends/synthetic_tree.h"
+#include "tests/mesh/synthetic_tree.h"
 
 using namespace ramus;
 using namespace ramus::mesh;

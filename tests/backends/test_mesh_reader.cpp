@@ -9,7 +9,7 @@
 #include "backends/mesh/gltf_writer.h"
 #include "backends/mesh/mesh_reader.h"
 #include "backends/mesh/openmesh_writer.h"
-#include "tests/backends/synthetic_tree.h"
+#include "tests/mesh/synthetic_tree.h"
 
 using namespace ramus;
 using namespace ramus::mesh;

@@ -6,7 +6,7 @@
 #include "backends/preview/preview.h"
 #include "backends/preview/raster.h"
 #include "core/atomic_file.h"
-#include "tests/backends/synthetic_tree.h"
+#include "tests/mesh/synthetic_tree.h"
 
 using namespace ramus;
 using namespace ramus::preview;

@@ -31,10 +31,12 @@ const std::map<std::string, std::set<std::string>> kMayUse = {
     {"formats", {"core", "grammar", "compiler"}},
     {"reconstruct", {"core"}},
     {"infer", {"core", "grammar", "compiler", "reconstruct"}},
-    {"backends", {"core", "grammar", "compiler", "formats"}},
-    {"runtime", {"core", "grammar", "compiler", "formats"}},
+    {"mesh", {"core"}},
+    {"backends", {"core", "mesh", "grammar", "compiler", "formats"}},
+    {"runtime", {"core", "mesh", "grammar", "compiler", "formats"}},
     {"lsp", {"core", "grammar"}},
-    {"cli", {"core", "grammar", "compiler", "formats", "reconstruct", "infer", "backends", "lsp"}},
+    {"cli",
+     {"core", "mesh", "grammar", "compiler", "formats", "reconstruct", "infer", "backends", "lsp"}},
 };
 
 bool is_source(const fs::path& p) {

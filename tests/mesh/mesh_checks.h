@@ -10,7 +10,7 @@
 #include <tuple>
 #include <vector>
 
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 
 namespace ramus::testing {
 

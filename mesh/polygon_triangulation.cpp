@@ -1,9 +1,9 @@
-#include "backends/mesh/polygon_triangulation.h"
+#include "mesh/polygon_triangulation.h"
 
 #include <algorithm>
 #include <cmath>
 
-#include "backends/mesh/frames.h"
+#include "mesh/frames.h"
 
 namespace ramus::mesh {
 

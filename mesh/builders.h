@@ -3,8 +3,8 @@
 
 #include <vector>
 
-#include "backends/mesh/branch_chains.h"
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/branch_chains.h"
+#include "mesh/tree_mesh.h"
 
 namespace ramus::mesh {
 

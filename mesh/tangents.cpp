@@ -1,4 +1,4 @@
-#include "backends/mesh/tangents.h"
+#include "mesh/tangents.h"
 
 #include <cmath>
 

@@ -1,18 +1,18 @@
-// TreeMesh: the triangle mesh of one tree (bark tubes and leaf cards) that every mesh writer and
-// the preview take. Built from a Skeleton by build_tree_mesh / build_tree_lods (see docs/mesh.md).
+// TreeMesh: the triangle mesh of one tree (bark tubes and leaf cards) that every mesh writer, the
+// preview and the embeddable runtime take. Built from a Skeleton by build_tree_mesh /
+// build_tree_lods (see docs/mesh.md). Geometry only: the pictures a writer puts on it (bark tile
+// sets, the leaf mask) stay in backends/ and reach the writers beside the mesh.
 #pragma once
 
 #include <array>
 #include <cstdint>
-#include <memory>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
-#include "backends/mesh/wind_rig.h"
-#include "backends/texture/bark_maps.h"
 #include "core/skeleton.h"
 #include "core/vec3.h"
+#include "mesh/wind_rig.h"
 
 namespace ramus::mesh {
 
@@ -53,14 +53,12 @@ struct TreeMesh {
   // polygon is triangulated twice, a front and a back face with opposite normals.
   MeshPart surfaces;
   // World position (double, z up) of the vertices' (0, 0, 0): zero for trees near the origin,
-  // a local origin for georeferenced ones (backends/mesh/local_origin.h). World position of a
+  // a local origin for georeferenced ones (mesh/local_origin.h). World position of a
   // vertex = origin + vertex; writers record it.
   Vec3 origin;
   // The joints and animation of the wind skin (MeshOptions::wind); empty otherwise. Every level
   // of a tree carries the same rig.
   WindRig wind_rig;
-  // The bark's base colour and normal map (docs/textures.md); null: the bundled tile set's.
-  std::shared_ptr<const texture::BarkTextures> bark_textures;
   std::size_t triangle_count() const {
     return bark.triangle_count() + leaves.triangle_count() + surfaces.triangle_count();
   }

@@ -5,10 +5,10 @@
 #include <limits>
 #include <numbers>
 
-#include "backends/mesh/frames.h"
-#include "backends/mesh/tree_mesh.h"
-#include "tests/backends/mesh_checks.h"
-#include "tests/backends/synthetic_tree.h"
+#include "mesh/frames.h"
+#include "mesh/tree_mesh.h"
+#include "tests/mesh/mesh_checks.h"
+#include "tests/mesh/synthetic_tree.h"
 
 using namespace ramus;
 using namespace ramus::mesh;

@@ -1,4 +1,4 @@
-#include "backends/mesh/local_origin.h"
+#include "mesh/local_origin.h"
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "backends/mesh/tree_mesh.h"
+#include "mesh/tree_mesh.h"
 
 namespace ramus::mesh {
 

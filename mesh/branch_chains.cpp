@@ -1,4 +1,4 @@
-#include "backends/mesh/branch_chains.h"
+#include "mesh/branch_chains.h"
 
 #include <algorithm>
 #include <cmath>

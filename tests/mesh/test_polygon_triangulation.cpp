@@ -1,9 +1,9 @@
-// Triangulation of the turtle's polygons (backends/mesh/polygon_triangulation.h).
+// Triangulation of the turtle's polygons (mesh/polygon_triangulation.h).
 #include <catch2/catch.hpp>
 #include <cmath>
 #include <vector>
 
-#include "backends/mesh/polygon_triangulation.h"
+#include "mesh/polygon_triangulation.h"
 
 using namespace ramus;
 using namespace ramus::mesh;

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <limits>
 
-#include "backends/mesh/builders.h"
-#include "backends/mesh/local_origin.h"
+#include "mesh/builders.h"
+#include "mesh/local_origin.h"
 
 namespace ramus::mesh {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "backends/mesh/builders.h"
-#include "backends/mesh/frames.h"
+#include "mesh/builders.h"
+#include "mesh/frames.h"
 #include "core/rng.h"
 
 namespace ramus::mesh {

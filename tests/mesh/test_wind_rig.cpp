@@ -1,11 +1,11 @@
-// The wind skin (backends/mesh/wind_rig.h): joints follow the branch chains within the budget,
+// The wind skin (mesh/wind_rig.h): joints follow the branch chains within the budget,
 // parents before children, the trunk's base joint never moves, every vertex is bound to joints
 // that exist with weights in [0, 1], and the trunk leans furthest at a quarter period.
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "backends/mesh/tree_mesh.h"
-#include "tests/backends/synthetic_tree.h"
+#include "mesh/tree_mesh.h"
+#include "tests/mesh/synthetic_tree.h"
 
 using namespace ramus;
 using namespace ramus::mesh;

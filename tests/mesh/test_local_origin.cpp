@@ -1,10 +1,10 @@
-// The local origin of a mesh (backends/mesh/local_origin.h): none for trees near the origin, a
+// The local origin of a mesh (mesh/local_origin.h): none for trees near the origin, a
 // whole-unit base point for georeferenced ones, carried by every level of detail.
 #include <catch2/catch.hpp>
 
-#include "backends/mesh/local_origin.h"
-#include "backends/mesh/tree_mesh.h"
-#include "tests/backends/synthetic_tree.h"
+#include "mesh/local_origin.h"
+#include "mesh/tree_mesh.h"
+#include "tests/mesh/synthetic_tree.h"
 
 using namespace ramus;
 using namespace ramus::mesh;

@@ -1,13 +1,13 @@
 // make_wind_rig: joints along the longest, lowest-order branch chains (the trunk first), within
 // a joint budget; every other chain rides on the joint where it leaves its parent.
-#include "backends/mesh/wind_rig.h"
+#include "mesh/wind_rig.h"
 
 #include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <numeric>
 
-#include "backends/mesh/builders.h"
+#include "mesh/builders.h"
 
 namespace ramus::mesh {
 namespace {

@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include "backends/mesh/builders.h"
-#include "backends/mesh/frames.h"
-#include "backends/mesh/polygon_triangulation.h"
+#include "mesh/builders.h"
+#include "mesh/frames.h"
+#include "mesh/polygon_triangulation.h"
 
 namespace ramus::mesh {
 namespace {

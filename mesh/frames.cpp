@@ -1,4 +1,4 @@
-#include "backends/mesh/frames.h"
+#include "mesh/frames.h"
 
 #include <cmath>
 
