@@ -1,17 +1,22 @@
-// The WebAssembly runtime (runtime/wasm/) grows, inside headless Chromium, the same trees as
-// the native pipeline: the example page (examples/runtime/web/) fetches each .rmb, grows it
-// with ramus_runtime.wasm and draws it with three.js; tests/runtime/browser/grow_in_chromium.mjs
-// reports what it grew, and every node and organ must equal grow_file's (the engine behind
-// `ramus build`) bit for bit, for the grammar's seed and another one.
-#include <sys/wait.h>
-#include <unistd.h>
-
-#include <catch2/catch.hpp>
+// The WebAssembly runtime (runtime/wasm/) grows and meshes, inside headless Chromium, the trees
+// of the native build: the example page (examples/runtime/web/) fetches each .rmb, grows it with
+// ramus_runtime.wasm, meshes it and draws it with three.js; grow_in_chromium.mjs
+// (tests/runtime/browser/) reports what the page made.
+//
+// What must be equal: the triangles the page meshed and three.js drew and the count in the
+// .glb `ramus build` writes from the same .rmb and seed; node and organ counts, parents, every
+// part's vertex count and index array (the native runtime's, whose arrays are the .glb's:
+// test_grow_mesh_example.cpp). What may differ in the last bits: the numbers. The module's
+// math library is emscripten's (musl's sin, cos, atan2, ...), which rounds some arguments the
+// other way from glibc's (docs/runtime.md, "In the browser"); the skeleton's doubles must agree
+// within 1e-12 and the mesh's floats within 1e-6 of the largest magnitude of their array.
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
-#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <string>
@@ -22,10 +27,14 @@
 #include "core/skeleton.h"
 #include "formats/rmb/rmb_codec.h"
 #include "grammar/loader.h"
+#include "runtime/ramus_runtime.h"
+#include "tests/assets/three_runner.h"
 
 namespace {
 
 namespace fs = std::filesystem;
+using cli_test::shell_quote;
+using nlohmann::json;
 
 #ifdef RAMUS_WASM_BUILT
 constexpr bool kWasmBuilt = true;
@@ -38,60 +47,113 @@ struct Case {
   std::uint64_t seed;   // 0: the grammar's own
 };
 
-// The little-endian bytes of the doubles as hex, the spelling grow_in_chromium.mjs uses.
-std::string hex(const std::vector<double>& values) {
-  static const char* digits = "0123456789abcdef";
-  std::string out;
-  for (double v : values) {
-    unsigned char b[8];
-    std::memcpy(b, &v, 8);
-    for (unsigned char c : b) {
-      out += digits[c >> 4];
-      out += digits[c & 15];
-    }
+// The values whose little-endian bytes grow_in_chromium.mjs wrote as hex.
+template <typename T>
+std::vector<T> from_hex(const std::string& hex) {
+  const auto nibble = [](char c) { return c <= '9' ? c - '0' : c - 'a' + 10; };
+  std::vector<unsigned char> bytes(hex.size() / 2);
+  for (std::size_t i = 0; i < bytes.size(); ++i) {
+    bytes[i] = static_cast<unsigned char>(nibble(hex[2 * i]) << 4 | nibble(hex[2 * i + 1]));
   }
+  std::vector<T> out(bytes.size() / sizeof(T));
+  std::memcpy(out.data(), bytes.data(), out.size() * sizeof(T));
   return out;
 }
 
-// Where two hex strings of doubles first differ, as "item I" (stride doubles per item).
-std::string first_difference(const std::string& want, const std::string& got, int stride) {
-  std::size_t i = 0;
-  while (i < want.size() && i < got.size() && want[i] == got[i]) ++i;
-  return "item " + std::to_string(i / 16 / stride);
+// Checks that `got` has the values of `want`, each within tolerance x the largest magnitude
+// in `want` (at least 1); says how many differ at all.
+template <typename T>
+void require_close(const std::string& what, const std::vector<T>& want, const std::vector<T>& got,
+                   double tolerance) {
+  INFO(what);
+  REQUIRE(got.size() == want.size());
+  double scale = 1, largest = 0;
+  std::size_t differ = 0, worst = 0;
+  for (std::size_t i = 0; i < want.size(); ++i) {
+    scale = std::max(scale, std::fabs(double(want[i])));
+    const double d = std::fabs(double(want[i]) - double(got[i]));
+    if (want[i] != got[i]) ++differ;
+    if (d > largest) largest = d, worst = i;
+  }
+  INFO(differ << " of " << want.size() << " values differ; the largest difference is " << largest
+              << " at " << worst << " (scale " << scale << ")");
+  CHECK(largest <= tolerance * scale);
 }
 
-int run_shell(const std::string& cmd, std::string& out) {
-  FILE* pipe = popen((cmd + " 2>&1").c_str(), "r");
-  if (pipe == nullptr) return -1;
-  char buf[4096];
-  while (std::size_t n = std::fread(buf, 1, sizeof buf, pipe)) out.append(buf, n);
-  const int raw = pclose(pipe);
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+template <typename T>
+std::vector<T> array_of(const T* data, std::size_t n) {
+  return data ? std::vector<T>(data, data + n) : std::vector<T>{};
 }
 
-std::string quote(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
+// Compares level 0 of the page's mesh with the native runtime's (`ramus build`'s defaults).
+void require_same_mesh(const std::string& rmb, std::uint64_t seed, const json& parts) {
+  const std::string bytes = cli_test::slurp(rmb);
+  std::unique_ptr<ramus_grammar, decltype(&ramus_free_grammar)> g(
+      ramus_load(bytes.data(), bytes.size(), nullptr, 0), ramus_free_grammar);
+  REQUIRE(g);
+  std::unique_ptr<ramus_skeleton, decltype(&ramus_free_skeleton)> s(
+      ramus_grow(g.get(), -1, seed, nullptr, 0), ramus_free_skeleton);
+  REQUIRE(s);
+  std::unique_ptr<ramus_mesh, decltype(&ramus_free_mesh)> m(
+      ramus_mesh_build(s.get(), nullptr, nullptr, 0), ramus_free_mesh);
+  REQUIRE(m);
+  REQUIRE(parts.size() == 3);
+  for (int part : {RAMUS_PART_BARK, RAMUS_PART_LEAVES, RAMUS_PART_SURFACES}) {
+    INFO("part " << part);
+    const std::size_t n = ramus_mesh_vertex_count(m.get(), 0, part);
+    const std::size_t k = ramus_mesh_index_count(m.get(), 0, part);
+    const json& p = parts[std::size_t(part)];
+    REQUIRE(p.is_null() == (n == 0));
+    if (n == 0) continue;
+    CHECK(p["indices"].get<std::vector<std::uint32_t>>() ==
+          array_of(ramus_mesh_indices(m.get(), 0, part), k));
+    require_close("positions", array_of(ramus_mesh_positions(m.get(), 0, part), 3 * n),
+                  from_hex<float>(p["positions"]), 1e-6);
+    require_close("normals", array_of(ramus_mesh_normals(m.get(), 0, part), 3 * n),
+                  from_hex<float>(p["normals"]), 1e-6);
+    require_close("uvs", array_of(ramus_mesh_uvs(m.get(), 0, part), 2 * n),
+                  from_hex<float>(p["uvs"]), 1e-6);
+  }
+}
+
+// The triangles of every primitive of a .glb: the index accessors' counts / 3.
+std::size_t glb_triangles(const fs::path& glb) {
+  const std::string bytes = cli_test::slurp(glb);
+  REQUIRE(bytes.size() > 20);
+  REQUIRE(bytes.compare(0, 4, "glTF") == 0);
+  std::uint32_t json_length = 0;
+  std::memcpy(&json_length, bytes.data() + 12, 4);
+  REQUIRE(bytes.compare(16, 4, "JSON") == 0);
+  const json gltf = json::parse(bytes.substr(20, json_length));
+  std::size_t indices = 0;
+  for (const json& mesh : gltf["meshes"]) {
+    for (const json& prim : mesh["primitives"]) {
+      indices += gltf["accessors"][prim["indices"].get<std::size_t>()]["count"].get<std::size_t>();
+    }
+  }
+  return indices / 3;
 }
 
 }  // namespace
 
-TEST_CASE("WebAssembly: Chromium grows the skeletons of the native pipeline", "[runtime][wasm]") {
-  // The demo tree (`make demo`) with its seed and a seed above 2^53 (JavaScript passes seeds
-  // as BigInts), a tree with organs, a deterministic and a branching ABOP figure.
-  const std::vector<Case> cases = {{"trees/broadleaf.ramus", 0},
-                                   {"trees/broadleaf.ramus", 0xfedcba9876543210ull},
-                                   {"trees/weeping.ramus", 0},
-                                   {"abop/fig1_24a.ramus", 0},
-                                   {"abop/fig2_8a_ternary.ramus", 7}};
+TEST_CASE("WebAssembly: Chromium grows and meshes the trees of the native build",
+          "[runtime][wasm]") {
   if (!kWasmBuilt) {
     WARN("skipped: configured with -DRAMUS_BUILD_WASM=OFF");
     return;
   }
+  // The demo tree (`make demo`), a tree that draws random numbers with a seed above 2^53
+  // (JavaScript passes seeds as BigInts), an ABOP figure with polygon leaves and a branching one.
+  const std::vector<Case> cases = {{"trees/broadleaf.ramus", 0},
+                                   {"trees/weeping.ramus", 0xfedcba9876543210ull},
+                                   {"abop/fig5_5_cordate_leaf.ramus", 0},
+                                   {"abop/fig2_8a_ternary.ramus", 7}};
   const fs::path dir = fs::temp_directory_path() / ("ramus_wasm_" + std::to_string(getpid()));
+  fs::remove_all(dir);
   fs::create_directories(dir);
   std::vector<ramus::Skeleton> want;
+  std::vector<std::size_t> want_triangles;
+  std::vector<std::uint64_t> seeds;
   std::string args;
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const std::string path = std::string(RAMUS_SOURCE_DIR) + "/examples/" + cases[i].example;
@@ -102,31 +164,45 @@ TEST_CASE("WebAssembly: Chromium grows the skeletons of the native pipeline", "[
     std::ofstream(rmb, std::ios::binary) << ramus::encode_rmb(g);
     ramus::GrowOptions o;
     o.seed = cases[i].seed ? cases[i].seed : g.settings.seed;
+    seeds.push_back(*o.seed);
     want.push_back(ramus::grow_file(path, o, sm, diags));
-    args += " " + quote(rmb.string() + "#seed=" + std::to_string(*o.seed));
+    const fs::path glb = dir / (std::to_string(i) + ".glb");
+    assets_test::ramus_ok(
+        {"build", rmb.string(), "--seed", std::to_string(*o.seed), "-o", glb.string()});
+    want_triangles.push_back(glb_triangles(glb));
+    args += " " + shell_quote(rmb.string() + "#seed=" + std::to_string(*o.seed));
   }
   std::string out;
-  const int code =
-      run_shell("node " + quote(RAMUS_SOURCE_DIR "/tests/runtime/browser/grow_in_chromium.mjs") +
-                    " " + quote(RAMUS_BINARY_DIR) + args,
-                out);
-  fs::remove_all(dir);
+  const int code = assets_test::run_shell(
+      "node " + shell_quote(RAMUS_SOURCE_DIR "/tests/runtime/browser/grow_in_chromium.mjs") + " " +
+          shell_quote(RAMUS_BINARY_DIR) + args,
+      out);
   if (code == 77) {
+    fs::remove_all(dir);
     WARN("skipped: " << out);
     return;
   }
   INFO(out.substr(0, 4000));
   REQUIRE(code == 0);
-  std::vector<nlohmann::json> got;
+  std::vector<json> got;
   std::istringstream lines(out);
   for (std::string line; std::getline(lines, line);) {
-    if (line.rfind("{\"file\"", 0) == 0) got.push_back(nlohmann::json::parse(line));
+    if (line.rfind("{\"file\"", 0) == 0) got.push_back(json::parse(line));
   }
   REQUIRE(got.size() == cases.size());
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const ramus::Skeleton& s = want[i];
-    const nlohmann::json& r = got[i];
-    INFO(cases[i].example << " seed " << r["file"].get<std::string>());
+    const json& r = got[i];
+    INFO(cases[i].example << " with seed " << seeds[i]);
+    // The acceptance: the page meshed and drew the triangles of `ramus build`'s .glb.
+    CHECK(want_triangles[i] > 0);
+    CHECK(r["meshTriangles"].get<std::size_t>() == want_triangles[i]);
+    CHECK(r["triangles"].get<std::size_t>() == want_triangles[i]);
+    CHECK(r["drawnPixels"].get<int>() > 0);
+    CHECK(r["drawnPixels"].get<int>() < r["pixels"].get<int>());
+    // The skeleton: the same topology, the same numbers up to the last bits.
+    REQUIRE(r["nodes"].get<std::size_t>() == s.nodes.size());
+    REQUIRE(r["organs"].get<std::size_t>() == s.organs.size());
     std::vector<double> positions, radii, organ_positions, organ_sizes;
     std::vector<std::int64_t> parents;
     for (const ramus::SkeletonNode& n : s.nodes) {
@@ -138,21 +214,12 @@ TEST_CASE("WebAssembly: Chromium grows the skeletons of the native pipeline", "[
       organ_positions.insert(organ_positions.end(), {o.position.x, o.position.y, o.position.z});
       organ_sizes.push_back(o.size);
     }
-    REQUIRE(r["nodes"].get<std::size_t>() == s.nodes.size());
-    REQUIRE(r["organs"].get<std::size_t>() == s.organs.size());
-    const auto same = [](const std::string& want_hex, const nlohmann::json& got_hex, int stride) {
-      const std::string g = got_hex.get<std::string>();
-      INFO("first difference at " << first_difference(want_hex, g, stride));
-      CHECK(g == want_hex);
-    };
-    same(hex(positions), r["positions"], 3);
-    same(hex(radii), r["radii"], 1);
-    same(hex(organ_positions), r["organPositions"], 3);
-    same(hex(organ_sizes), r["organSizes"], 1);
     CHECK(r["parents"].get<std::vector<std::int64_t>>() == parents);
-    // Drawn: the page rendered segments and organs over part of its picture.
-    CHECK(r["drawCalls"].get<int>() >= 1);
-    CHECK(r["drawnPixels"].get<int>() > 0);
-    CHECK(r["drawnPixels"].get<int>() < r["pixels"].get<int>());
+    require_close("node positions", positions, from_hex<double>(r["positions"]), 1e-12);
+    require_close("radii", radii, from_hex<double>(r["radii"]), 1e-12);
+    require_close("organ positions", organ_positions, from_hex<double>(r["organPositions"]), 1e-12);
+    require_close("organ sizes", organ_sizes, from_hex<double>(r["organSizes"]), 1e-12);
+    require_same_mesh((dir / (std::to_string(i) + ".rmb")).string(), seeds[i], r["parts"]);
   }
+  fs::remove_all(dir);
 }

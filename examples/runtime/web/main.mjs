@@ -1,11 +1,17 @@
-// The example page: fetches a binary grammar (.rmb), grows it with the WebAssembly runtime
-// (/ramus/ramus.mjs) and draws it with three.js. Only the rules travel over the network; the
-// tree is grown here. When it is drawn, window.ramusResult holds what the page did (the
-// headless test, tests/runtime/browser/grow_in_chromium.mjs, reads it):
-//   { nodes, organs, growMs, triangles, drawCalls, drawnPixels, pixels }  or  { error }
+// The example page: fetches a binary grammar (.rmb), grows and meshes it with the WebAssembly
+// runtime (/ramus/ramus.mjs) and draws it with three.js. Only the rules travel over the
+// network; the tree and its mesh are made here. Query: ?rmb=URL, &seed=S and &steps=N
+// (replace the grammar's), &lods=K (levels to build, default 1) and &level=L (the one drawn),
+// &skeleton=1 (draw the skeleton as lines instead of the mesh), &size=N (an N x N canvas).
+// When it is drawn, window.ramusResult holds what the page did (the headless test,
+// tests/runtime/browser/grow_in_chromium.mjs, reads it):
+//   { nodes, organs, growMs, meshMs, meshTriangles, triangles, drawCalls, drawnPixels, pixels,
+//     rmbBytes }  or  { error }
+// meshTriangles is the index count / 3 of the drawn level's parts, triangles what three.js
+// drew (renderer.info) in one render.
 import * as THREE from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { loadRamus } from '/ramus/ramus.mjs';
+import { loadRamus, Part } from '/ramus/ramus.mjs';
 
 const params = new URLSearchParams(location.search);
 const status = document.getElementById('status');
@@ -32,6 +38,54 @@ function skeletonObject(tree) {
       sizeAttenuation: false })));
   }
   return group;
+}
+
+// The alpha mask of the leaf cards: the runtime hands out geometry only (the .glb `ramus build`
+// writes carries its own leaf picture), so the page draws a pointed oval, long along v as the
+// cards are.
+function leafTexture() {
+  const canvas = document.createElement('canvas');
+  canvas.width = 64;
+  canvas.height = 128;
+  const g = canvas.getContext('2d');
+  g.fillStyle = '#ffffff';
+  g.beginPath();
+  g.moveTo(32, 2);
+  g.bezierCurveTo(62, 40, 62, 90, 32, 126);
+  g.bezierCurveTo(2, 90, 2, 40, 32, 2);
+  g.fill();
+  const texture = new THREE.CanvasTexture(canvas);
+  texture.colorSpace = THREE.SRGBColorSpace;
+  return texture;
+}
+
+// One level of the mesh: a three.js mesh per non-empty part, with the part's arrays as they
+// come (y up, like the .glb). Returns the group and the number of triangles its indices hold.
+function meshObject(mesh, level) {
+  const group = new THREE.Group();
+  const [ox, oy, oz] = mesh.origin;
+  group.position.set(ox, oy, oz);
+  const materials = {
+    [Part.BARK]: new THREE.MeshStandardMaterial({ color: 0x6b4a2f, roughness: 0.9 }),
+    [Part.LEAVES]: new THREE.MeshStandardMaterial({ color: 0x4a8a2e, roughness: 0.6,
+      alphaMap: leafTexture(), alphaTest: 0.5 }),
+    [Part.SURFACES]: new THREE.MeshStandardMaterial({ color: 0x46872d, roughness: 0.6 }),
+  };
+  let triangles = 0;
+  for (const part of [Part.BARK, Part.LEAVES, Part.SURFACES]) {
+    const a = mesh.part(level, part);
+    if (!a) continue;
+    const geometry = new THREE.BufferGeometry();
+    geometry.setAttribute('position', new THREE.BufferAttribute(a.positions, 3));
+    geometry.setAttribute('normal', new THREE.BufferAttribute(a.normals, 3));
+    geometry.setAttribute('uv', new THREE.BufferAttribute(a.uvs, 2));
+    geometry.setIndex(new THREE.BufferAttribute(a.indices, 1));
+    const object = new THREE.Mesh(geometry, materials[part]);
+    object.frustumCulled = false;  // one render must draw every triangle (the test counts them)
+    group.add(object);
+    triangles += a.indices.length / 3;
+  }
+  return { group, triangles };
 }
 
 // A camera that sees the whole box from the front (-z in three.js's frame).
@@ -70,7 +124,18 @@ async function main() {
   const sun = new THREE.DirectionalLight(0xffffff, 2.0);
   sun.position.set(1, 2, 3);
   scene.add(sun);
-  const object = skeletonObject(tree);
+  let object, meshMs = 0, meshTriangles = 0;
+  if (params.get('skeleton') === '1') {
+    object = skeletonObject(tree);
+  } else {
+    const lods = Number(params.get('lods')) || 1;
+    const level = Number(params.get('level')) || 0;
+    const meshStart = performance.now();
+    const mesh = tree.mesh({ lodCount: lods });
+    meshMs = performance.now() - meshStart;
+    ({ group: object, triangles: meshTriangles } = meshObject(mesh, level));
+    window.ramusMesh = mesh;  // for the console and the headless test
+  }
   scene.add(object);
   object.updateMatrixWorld(true);
   const box = new THREE.Box3().setFromObject(object);
@@ -79,7 +144,7 @@ async function main() {
   const renderer = new THREE.WebGLRenderer({ antialias: !size, preserveDrawingBuffer: true });
   renderer.setPixelRatio(size ? 1 : window.devicePixelRatio);
   const width = size || window.innerWidth, height = size || window.innerHeight;
-  renderer.setSize(width, height, !size);
+  renderer.setSize(width, height);
   document.body.appendChild(renderer.domElement);
   const camera = new THREE.PerspectiveCamera(40, width / height, 0.01, 100);
   const controls = new OrbitControls(camera, renderer.domElement);
@@ -110,10 +175,11 @@ async function main() {
     renderer.render(scene, camera);
   });
 
-  status.textContent = `${url}: ${tree.nodeCount} nodes, ${tree.organCount} organs, grown in ` +
-    `${growMs.toFixed(1)} ms from ${bytes.length} bytes`;
-  window.ramusResult = { nodes: tree.nodeCount, organs: tree.organCount, growMs, ...info,
-    drawnPixels: drawn, pixels: width * height, rmbBytes: bytes.length };
+  status.textContent = `${url}: ${bytes.length} bytes grown into ${tree.nodeCount} nodes and ` +
+    `${tree.organCount} organs in ${growMs.toFixed(1)} ms` +
+    (meshTriangles ? `, meshed into ${meshTriangles} triangles in ${meshMs.toFixed(1)} ms` : '');
+  window.ramusResult = { nodes: tree.nodeCount, organs: tree.organCount, growMs, meshMs,
+    meshTriangles, ...info, drawnPixels: drawn, pixels: width * height, rmbBytes: bytes.length };
 }
 
 main().catch((e) => {

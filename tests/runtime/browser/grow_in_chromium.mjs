@@ -2,11 +2,15 @@
 // Opens the example page (examples/runtime/web/) in Debian's headless Chromium (software WebGL,
 // tests/pieces/browser/chromium.js) on each .rmb: the WebAssembly runtime grows the tree in the
 // page and three.js draws it. Prints one JSON line per file:
-//   {"file", "nodes", "organs", "triangles", "drawCalls", "drawnPixels", "pixels", "growMs",
-//    "wasmBytes", "positions", "radii", "parents", "organPositions", "organSizes"}
-// triangles and drawCalls come from three.js's renderer.info after one render; the arrays are
-// the grown skeleton's, the doubles as the hex of their little-endian bytes (exact), parents
-// as numbers.
+//   {"file", "nodes", "organs", "meshTriangles", "triangles", "drawCalls", "drawnPixels",
+//    "pixels", "growMs", "meshMs", "wasmBytes", "positions", "radii", "parents",
+//    "organPositions", "organSizes", "parts"}
+// meshTriangles is the drawn level's index count / 3, triangles and drawCalls come from
+// three.js's renderer.info after one render; positions ... organSizes are the grown
+// skeleton's, the doubles as the hex of their little-endian bytes (exact), parents as numbers;
+// parts has per part of level 0 (bark, leaves, surfaces) its arrays, the floats in hex as
+// above and the indices as numbers: {"positions", "normals", "uvs", "indices"}, or null for an
+// empty part.
 //   node grow_in_chromium.mjs BUILD_DIR FILE.rmb[#seed=S&steps=N]...
 // What follows '#' goes to the page's query: seed (any uint64) and steps replace the grammar's.
 // With RAMUS_WEB_SCREENSHOTS=1 the picture of each file is kept as FILE.web.png.
@@ -61,10 +65,15 @@ try {
       if (r.error) return r;
       const hex = (a) => Array.from(new Uint8Array(a.buffer, a.byteOffset, a.byteLength),
         (b) => b.toString(16).padStart(2, '0')).join('');
-      const t = window.ramusTree;
+      const t = window.ramusTree, mesh = window.ramusMesh;
+      const parts = !mesh ? [] : [0, 1, 2].map((part) => {
+        const a = mesh.part(0, part);
+        return a && { positions: hex(a.positions), normals: hex(a.normals), uvs: hex(a.uvs),
+          indices: Array.from(a.indices) };
+      });
       return { ...r, positions: hex(t.positions), radii: hex(t.radii),
         parents: Array.from(t.parents), organPositions: hex(t.organPositions),
-        organSizes: hex(t.organSizes) };
+        organSizes: hex(t.organSizes), parts };
     });
     if (result.error) {
       console.error(`${file}: ${result.error}\n${messages.join('\n')}`);
