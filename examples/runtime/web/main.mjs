@@ -124,7 +124,7 @@ async function main() {
   const sun = new THREE.DirectionalLight(0xffffff, 2.0);
   sun.position.set(1, 2, 3);
   scene.add(sun);
-  let object, meshMs = 0, meshTriangles = 0;
+  let object, meshMs = 0, meshTriangles = 0, meshed = '';
   if (params.get('skeleton') === '1') {
     object = skeletonObject(tree);
   } else {
@@ -134,6 +134,8 @@ async function main() {
     const mesh = tree.mesh({ lodCount: lods });
     meshMs = performance.now() - meshStart;
     ({ group: object, triangles: meshTriangles } = meshObject(mesh, level));
+    meshed = `, meshed (${mesh.lodCount} level${mesh.lodCount > 1 ? 's' : ''}) in ` +
+      `${meshMs.toFixed(1)} ms; level ${level}: ${meshTriangles} triangles`;
     window.ramusMesh = mesh;  // for the console and the headless test
   }
   scene.add(object);
@@ -177,7 +179,7 @@ async function main() {
 
   status.textContent = `${url}: ${bytes.length} bytes grown into ${tree.nodeCount} nodes and ` +
     `${tree.organCount} organs in ${growMs.toFixed(1)} ms` +
-    (meshTriangles ? `, meshed into ${meshTriangles} triangles in ${meshMs.toFixed(1)} ms` : '');
+    meshed;
   window.ramusResult = { nodes: tree.nodeCount, organs: tree.organCount, growMs, meshMs,
     meshTriangles, ...info, drawnPixels: drawn, pixels: width * height, rmbBytes: bytes.length };
 }
