@@ -1,10 +1,12 @@
-# Proves ramus_runtime uses no Boost, Eigen or TBB: (1) none is among the libraries the target
-# links, and (2) no header any of its sources includes, followed transitively by the compiler
-# (-M), lies under boost/, eigen3/, Eigen/, tbb/ or oneapi/. Run by ctest as
+# Proves ramus_runtime uses no Boost, Eigen or TBB, and (with the mesher of mesh/) none of the
+# back end's mesh libraries: (1) none is among the libraries the target links, and (2) no header
+# any of its sources includes, followed transitively by the compiler (-M), lies under boost/,
+# eigen3/, Eigen/, tbb/, oneapi/, nanoflann/, OpenMesh/, draco/, stb/ or nlohmann/, or is
+# tiny_gltf.h or meshoptimizer.h. Run by ctest as
 #   cmake -DCXX=... -DROOT=... -DSOURCES=a.cpp|b.cpp -DLIBS=x|y -P check_no_heavy_deps.cmake
 string(REPLACE "|" ";" SOURCES "${SOURCES}")
 string(REPLACE "|" ";" LIBS "${LIBS}")
-set(forbidden "(^|[/:])(boost|Boost|eigen3|Eigen|Eigen3|tbb|TBB|oneapi|nanoflann)([/:]|$)")
+set(forbidden "(^|[/:])(boost|Boost|eigen3|Eigen|Eigen3|tbb|TBB|oneapi|nanoflann|OpenMesh|OpenMeshCore|draco|stb|nlohmann|nlohmann_json|TinyGLTF|tiny_gltf[.]h|meshoptimizer|meshoptimizer[.]h)([/:]|$)")
 foreach(lib ${LIBS})
   if(lib MATCHES "${forbidden}")
     message(FATAL_ERROR "ramus_runtime links ${lib}")
@@ -33,4 +35,4 @@ endforeach()
 if(count LESS 5)
   message(FATAL_ERROR "expected the runtime's sources, got ${count}")
 endif()
-message(STATUS "ramus_runtime: ${count} sources, no Boost/Eigen/TBB")
+message(STATUS "ramus_runtime: ${count} sources, no Boost/Eigen/TBB/tinygltf/OpenMesh/Draco/meshoptimizer")

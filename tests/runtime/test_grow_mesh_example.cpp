@@ -115,7 +115,7 @@ TEST_CASE("grow_mesh writes the arrays of ramus build's glb for every example", 
   cli_test::TempDir tmp;
   const std::vector<fs::path> grammars = example_grammars();
   REQUIRE(grammars.size() >= 30);
-  std::size_t compared = 0;
+  std::size_t compared = 0, skipped = 0;
   for (const fs::path& grammar : grammars) {
     const std::string name = grammar.stem().string();
     INFO(grammar.string());
@@ -133,15 +133,31 @@ TEST_CASE("grow_mesh writes the arrays of ramus build's glb for every example", 
         run(ramus + " -q build " + g + " --target binary -o " + shell_quote(rmb.string()));
     REQUIRE(binary.status == 0);
     const auto mesh = run(ramus + " -q build " + g + options + " -o " + shell_quote(glb.string()));
-    INFO(mesh.out);
-    REQUIRE(mesh.status == 0);
     const auto grown = run(grow_mesh + " " + shell_quote(rmb.string()) + " " +
                            shell_quote(dir.string()) + options);
+    INFO(mesh.out);
     INFO(grown.out);
     REQUIRE(grown.status == 0);
+    if (mesh.status != 0 && mesh.out.find("no lsystem block") != std::string::npos) {
+      // Pieces only, or an lsystem that comes from an import: `ramus build` makes no mesh of it
+      // (the .rmb holds the imported block, which the runtime grows), so there is nothing to
+      // compare with.
+      ++skipped;
+      continue;
+    }
+    if (mesh.status != 0) {
+      // A string without anything to draw: `ramus build` has no .glb to write and the runtime
+      // meshes nothing.
+      REQUIRE(mesh.out.find("no geometry") != std::string::npos);
+      CHECK(grown.out.find("LOD0 0 vertices 0 triangles") != std::string::npos);
+      CHECK(fs::is_empty(dir));
+      ++skipped;
+      continue;
+    }
     compared += compare_with_glb(ramus::testing::read_glb(cli_test::slurp(glb)), dir);
   }
-  CHECK(compared > 4 * grammars.size());
+  CHECK(skipped <= 4);
+  CHECK(compared > 4 * (grammars.size() - skipped));
 }
 
 TEST_CASE("grow_mesh rejects bad input with a message", "[runtime]") {

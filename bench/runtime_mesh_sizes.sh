@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Sizes side by side and the runtime's time to grow and mesh (README, "The runtime grows drawable
+# trees"; docs/runtime.md, "Meshes"; issue 23 point 5). For each example grammar with an lsystem
+# block (or those given): the .rmb (`ramus build --target binary`, plain and with --zstd), the
+# .glb of its tree (`ramus build`, LOD0), the same compressed with Draco and with meshoptimizer
+# (`--compress draco|meshopt`), the tree's nodes and LOD0 triangles, and the time the runtime's
+# example program (examples/runtime/grow_mesh.c) takes to grow and to mesh it on one core
+# (`taskset -c 0`, the fastest of REPEAT runs, default 20). Prints a Markdown table.
+#   bench/runtime_mesh_sizes.sh [BUILD_DIR] [GRAMMAR.ramus ...]
+set -euo pipefail
+build="${1:-build/release}"
+shift || true
+ramus="$build/ramus"
+grow_mesh="$build/grow_mesh"
+repeat="${REPEAT:-20}"
+work="$(mktemp -d)"
+trap 'rm -rf "$work"' EXIT
+
+grammars=("$@")
+if [ ${#grammars[@]} -eq 0 ]; then
+  for f in $(find examples -name '*.ramus' | sort); do
+    grep -q 'lsystem ' "$f" && grammars+=("$f")
+  done
+fi
+size() { stat -c %s "$1"; }
+
+echo "| tree | nodes | triangles | .rmb | .rmb zstd | .glb | Draco .glb | meshopt .glb | grow ms | mesh ms |"
+echo "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|"
+for g in "${grammars[@]}"; do
+  name="$(basename "${g%.ramus}")"
+  "$ramus" -q build "$g" --target binary -o "$work/$name.rmb"
+  "$ramus" -q build "$g" --target binary --zstd -o "$work/$name.z.rmb"
+  "$ramus" -q build "$g" -o "$work/$name.glb"
+  "$ramus" -q build "$g" --compress draco -o "$work/$name.draco.glb"
+  "$ramus" -q build "$g" --compress meshopt -o "$work/$name.meshopt.glb"
+  # "X.rmb: N nodes, M organs; LOD0 V vertices T triangles; grow A ms, mesh B ms"
+  line="$(taskset -c 0 "$grow_mesh" "$work/$name.rmb" --repeat "$repeat")"
+  nodes="$(sed -E 's/.*: ([0-9]+) nodes.*/\1/' <<<"$line")"
+  triangles="$(sed -E 's/.*LOD0 [0-9]+ vertices ([0-9]+) triangles.*/\1/' <<<"$line")"
+  grow="$(sed -E 's/.*grow ([0-9.]+) ms.*/\1/' <<<"$line")"
+  mesh="$(sed -E 's/.*mesh ([0-9.]+) ms.*/\1/' <<<"$line")"
+  printf '| %s | %s | %s | %s | %s | %s | %s | %s | %.1f | %.1f |\n' "${g#examples/}" \
+    "$nodes" "$triangles" "$(size "$work/$name.rmb")" "$(size "$work/$name.z.rmb")" \
+    "$(size "$work/$name.glb")" "$(size "$work/$name.draco.glb")" \
+    "$(size "$work/$name.meshopt.glb")" "$grow" "$mesh"
+done
