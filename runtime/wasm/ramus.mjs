@@ -83,18 +83,33 @@ export class Ramus {
     if (!handle) throw new RamusError(this.error());
     return new Grammar(this, handle);
   }
+}
 
-  track(object, free) {
-    const token = { free, handle: object.handle };
-    this.freer.register(object, token, object);
+// A native object of the module: freed by free(), or after the JavaScript object is garbage
+// collected (the registry holds the handle and the free function, never the object).
+class Native {
+  constructor(ramus, handle, freeName) {
+    this.ramus = ramus;
+    this.handle = handle;
+    this.freeName = freeName;
+    ramus.freer.register(this, { free: ramus.m[freeName], handle }, this);
+  }
+
+  free() {
+    if (!this.handle) return;
+    this.ramus.freer.unregister(this);
+    this.ramus.m[this.freeName](this.handle);
+    this.handle = 0;
+  }
+
+  live() {
+    if (!this.handle) throw new RamusError(`this ${this.constructor.name} was freed`);
   }
 }
 
-export class Grammar {
+export class Grammar extends Native {
   constructor(ramus, handle) {
-    this.ramus = ramus;
-    this.handle = handle;
-    ramus.track(this, (h) => ramus.m._ramus_free_grammar(h));
+    super(ramus, handle, '_ramus_free_grammar');
   }
 
   // The grammar's own `derive N` and `seed S` (a BigInt: seeds are 64-bit).
@@ -105,28 +120,19 @@ export class Grammar {
   // grammar's. Equals what `ramus build` grows from the source grammar with the same seed.
   grow({ steps = -1, seed = this.seed } = {}) {
     const r = this.ramus;
-    if (!this.handle) throw new RamusError('grow: the grammar was freed');
+    this.live();
     const handle = r.m._ramus_grow(this.handle, steps, BigInt.asUintN(64, BigInt(seed)), r.err,
       kErrorBytes);
     if (!handle) throw new RamusError(r.error());
     return new Tree(r, handle);
   }
-
-  free() {
-    if (!this.handle) return;
-    this.ramus.freer.unregister(this);
-    this.ramus.m._ramus_free_grammar(this.handle);
-    this.handle = 0;
-  }
 }
 
 // A grown skeleton: a forest of nodes (the segment of node i runs from its parent's position
 // to its own) and the organs placed with `~`. The arrays are copies made on first use.
-export class Tree {
+export class Tree extends Native {
   constructor(ramus, handle) {
-    this.ramus = ramus;
-    this.handle = handle;
-    ramus.track(this, (h) => ramus.m._ramus_free_skeleton(h));
+    super(ramus, handle, '_ramus_free_skeleton');
   }
 
   get nodeCount() { return this.ramus.m._ramus_node_count(this.handle); }
@@ -160,7 +166,7 @@ export class Tree {
   // (true: glTF's and three.js's frame, the .glb's arrays bit for bit; false: z up).
   mesh({ lodCount = 1, pipeExponent = 0, crossedLeaves = false, leafScale = 1, yUp = true } = {}) {
     const r = this.ramus, m = r.m, o = r.options;
-    if (!this.handle) throw new RamusError('mesh: the tree was freed');
+    this.live();
     m._ramus_mesh_options_init(o);
     m.HEAP32[(o + kOptions.lodCount) >> 2] = lodCount;
     m.HEAPF64[(o + kOptions.pipeExponent) >> 3] = pipeExponent;
@@ -172,15 +178,8 @@ export class Tree {
     return new Mesh(r, handle);
   }
 
-  free() {
-    if (!this.handle) return;
-    this.ramus.freer.unregister(this);
-    this.ramus.m._ramus_free_skeleton(this.handle);
-    this.handle = 0;
-  }
-
   cached(key, make) {
-    if (!this.handle) throw new RamusError('the tree was freed');
+    this.live();
     if (!this[key]) this[key] = make();
     return this[key];
   }
@@ -207,11 +206,9 @@ export class Tree {
 // A tree mesh: for each level of detail, the parts (Part.BARK, LEAVES, SURFACES) as the arrays
 // of the glTF primitives `ramus build` writes. part() copies them out of the module's memory,
 // so they stay valid after free().
-export class Mesh {
+export class Mesh extends Native {
   constructor(ramus, handle) {
-    this.ramus = ramus;
-    this.handle = handle;
-    ramus.track(this, (h) => ramus.m._ramus_free_mesh(h));
+    super(ramus, handle, '_ramus_free_mesh');
   }
 
   get lodCount() { return this.ramus.m._ramus_mesh_lod_count(this.handle); }
@@ -229,7 +226,7 @@ export class Mesh {
   // { positions, normals, uvs, tangents (bark only, else null), wind, skinNodes, indices }, or
   // null for an empty part.
   part(lod, part) {
-    if (!this.handle) throw new RamusError('the mesh was freed');
+    this.live();
     const m = this.ramus.m, h = this.handle;
     const n = this.vertexCount(lod, part), k = this.indexCount(lod, part);
     if (n === 0) return null;
@@ -247,12 +244,5 @@ export class Mesh {
       wind: floats('_ramus_mesh_wind', 4), skinNodes: uints('_ramus_mesh_skin_nodes', n),
       indices: uints('_ramus_mesh_indices', k),
     };
-  }
-
-  free() {
-    if (!this.handle) return;
-    this.ramus.freer.unregister(this);
-    this.ramus.m._ramus_free_mesh(this.handle);
-    this.handle = 0;
   }
 }

@@ -6,10 +6,11 @@
 // What must be equal: the triangles the page meshed and three.js drew and the count in the
 // .glb `ramus build` writes from the same .rmb and seed; node and organ counts, parents, every
 // part's vertex count and index array (the native runtime's, whose arrays are the .glb's:
-// test_grow_mesh_example.cpp). What may differ in the last bits: the numbers. The module's
-// math library is emscripten's (musl's sin, cos, atan2, ...), which rounds some arguments the
-// other way from glibc's (docs/runtime.md, "In the browser"); the skeleton's doubles must agree
-// within 1e-12 and the mesh's floats within 1e-6 of the largest magnitude of their array.
+// test_grow_mesh_example.cpp); and a truncated image must give the runtime's "byte N: ...".
+// What may differ in the last bits: the numbers. The module's math library is emscripten's
+// (musl's sin, cos, atan2, ...), which rounds some arguments the other way from glibc's
+// (docs/runtime.md, "In the browser"); the skeleton's doubles must agree within 1e-12 and the
+// mesh's floats within 1e-6 of the largest magnitude of their array.
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
@@ -172,6 +173,11 @@ TEST_CASE("WebAssembly: Chromium grows and meshes the trees of the native build"
     want_triangles.push_back(glb_triangles(glb));
     args += " " + shell_quote(rmb.string() + "#seed=" + std::to_string(*o.seed));
   }
+  // And a truncated image: the page shows the runtime's message, thrown as a RamusError.
+  const std::string whole = cli_test::slurp(dir / "0.rmb");
+  const fs::path truncated = dir / "truncated.rmb";
+  std::ofstream(truncated, std::ios::binary) << whole.substr(0, whole.size() / 2);
+  args += " " + shell_quote(truncated.string());
   std::string out;
   const int code = assets_test::run_shell(
       "node " + shell_quote(RAMUS_SOURCE_DIR "/tests/runtime/browser/grow_in_chromium.mjs") + " " +
@@ -189,11 +195,14 @@ TEST_CASE("WebAssembly: Chromium grows and meshes the trees of the native build"
   for (std::string line; std::getline(lines, line);) {
     if (line.rfind("{\"file\"", 0) == 0) got.push_back(json::parse(line));
   }
-  REQUIRE(got.size() == cases.size());
+  REQUIRE(got.size() == cases.size() + 1);
+  REQUIRE(got.back().contains("error"));
+  CHECK(got.back()["error"].get<std::string>().rfind("byte ", 0) == 0);
   for (std::size_t i = 0; i < cases.size(); ++i) {
     const ramus::Skeleton& s = want[i];
     const json& r = got[i];
     INFO(cases[i].example << " with seed " << seeds[i]);
+    REQUIRE_FALSE(r.contains("error"));
     // The acceptance: the page meshed and drew the triangles of `ramus build`'s .glb.
     CHECK(want_triangles[i] > 0);
     CHECK(r["meshTriangles"].get<std::size_t>() == want_triangles[i]);

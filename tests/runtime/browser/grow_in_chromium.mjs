@@ -14,8 +14,9 @@
 //   node grow_in_chromium.mjs BUILD_DIR FILE.rmb[#seed=S&steps=N]...
 // What follows '#' goes to the page's query: seed (any uint64) and steps replace the grammar's.
 // With RAMUS_WEB_SCREENSHOTS=1 the picture of each file is kept as FILE.web.png.
-// Exit codes: 0 every file grew and was drawn, 1 a page failed, 2 usage, 77 Chromium cannot
-// run here (the message on stderr says why).
+// A file the page reports an error for (a corrupt .rmb) gives {"file", "error"} instead.
+// Exit codes: 0 every page finished, 1 a page did not (it threw or hung; stderr says why), 2
+// usage, 77 Chromium cannot run here (the message on stderr says why).
 import fs from 'node:fs';
 import path from 'node:path';
 import { createRequire } from 'node:module';
@@ -76,8 +77,7 @@ try {
         organSizes: hex(t.organSizes), parts };
     });
     if (result.error) {
-      console.error(`${file}: ${result.error}\n${messages.join('\n')}`);
-      failed = true;
+      console.log(JSON.stringify({ file: arg, error: result.error }));
     } else {
       if (process.env.RAMUS_WEB_SCREENSHOTS === '1') {
         await page.locator('canvas').screenshot({ path: `${file}.web.png` });
