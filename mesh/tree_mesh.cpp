@@ -107,25 +107,11 @@ std::vector<std::string> MeshReport::warnings() const {
   return w;
 }
 
-TreeMesh build_tree_mesh(const Skeleton& s, const MeshOptions& options, int lod,
-                         MeshReport* report) {
-  check_options(options, lod);
-  MeshReport local;
-  MeshReport& r = report ? *report : local;
-  const Vec3 origin = local_origin(s);
-  Skeleton storage;
-  const Skeleton& at_origin = local_skeleton(s, origin, storage);
-  const PreparedSkeleton p = prepare_skeleton(at_origin, options, r);
-  const WindField wind = make_wind_field(at_origin, p);
-  TreeMesh mesh = build_level(at_origin, p, wind, options, lod, r);
-  mesh.origin = origin;
-  if (options.wind) mesh.wind_rig = make_wind_rig(at_origin, p, wind, options.wind_rig);
-  return mesh;
-}
+namespace {
 
-std::vector<TreeMesh> build_tree_lods(const Skeleton& s, const MeshOptions& options,
-                                      MeshReport* report) {
-  check_options(options, 0);
+// Levels first..last of the tree, from one preparation of the skeleton.
+std::vector<TreeMesh> build_levels(const Skeleton& s, const MeshOptions& options, int first,
+                                   int last, MeshReport* report) {
   MeshReport local;
   MeshReport& r = report ? *report : local;
   const Vec3 origin = local_origin(s);
@@ -136,12 +122,26 @@ std::vector<TreeMesh> build_tree_lods(const Skeleton& s, const MeshOptions& opti
   std::vector<TreeMesh> lods;
   WindRig rig;
   if (options.wind) rig = make_wind_rig(at_origin, p, wind, options.wind_rig);
-  for (int k = 0; k < options.lod_count; ++k) {
+  for (int k = first; k <= last; ++k) {
     lods.push_back(build_level(at_origin, p, wind, options, k, r));
     lods.back().origin = origin;
     lods.back().wind_rig = rig;
   }
   return lods;
+}
+
+}  // namespace
+
+TreeMesh build_tree_mesh(const Skeleton& s, const MeshOptions& options, int lod,
+                         MeshReport* report) {
+  check_options(options, lod);
+  return std::move(build_levels(s, options, lod, lod, report).front());
+}
+
+std::vector<TreeMesh> build_tree_lods(const Skeleton& s, const MeshOptions& options,
+                                      MeshReport* report) {
+  check_options(options, 0);
+  return build_levels(s, options, 0, options.lod_count - 1, report);
 }
 
 }  // namespace ramus::mesh

@@ -43,6 +43,14 @@ void copy3(const ramus::Vec3& v, double* out) {
   if (out) out[0] = v.x, out[1] = v.y, out[2] = v.z;
 }
 
+// The turtle frame of a node or an organ (either has heading, left and up).
+template <typename T>
+void copy_frame(const T& x, double* heading, double* left, double* up) {
+  copy3(x.heading, heading);
+  copy3(x.left, left);
+  copy3(x.up, up);
+}
+
 }  // namespace
 
 struct ramus_mesh {
@@ -89,10 +97,7 @@ extern "C" {
 int ramus_node_frame(const ramus_skeleton* s, size_t i, double heading[3], double left[3],
                      double up[3]) {
   if (!s || i >= s->s.nodes.size()) return -1;
-  const ramus::SkeletonNode& n = s->s.nodes[i];
-  copy3(n.heading, heading);
-  copy3(n.left, left);
-  copy3(n.up, up);
+  copy_frame(s->s.nodes[i], heading, left, up);
   return 0;
 }
 
@@ -104,10 +109,7 @@ int ramus_node_order(const ramus_skeleton* s, size_t i) {
 int ramus_organ_frame(const ramus_skeleton* s, size_t i, double heading[3], double left[3],
                       double up[3]) {
   if (!s || i >= s->s.organs.size()) return -1;
-  const ramus::OrganAnchor& o = s->s.organs[i];
-  copy3(o.heading, heading);
-  copy3(o.left, left);
-  copy3(o.up, up);
+  copy_frame(s->s.organs[i], heading, left, up);
   return 0;
 }
 
