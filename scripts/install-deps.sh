@@ -13,6 +13,9 @@ packages=(
   # for Godot's editor, which imports assets. ~63 s to install on the project machine.
   blender godot3 xvfb xauth
   parallel  # GNU parallel: scripts/run-tiles.sh runs a tiled plot's tiles (tests/forest)
+  # em++ (3.1.6, with its prebuilt libc/libc++): the runtime as WebAssembly (runtime/wasm/),
+  # grown in headless Chromium by tests/runtime/test_wasm.cpp
+  emscripten
 )
 missing=()
 for p in "${packages[@]}"; do
