@@ -157,8 +157,13 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
   std::vector<std::uint8_t> placed(n, 0);
   std::vector<double> placed_radius(n, 0.0);
   std::vector<Eigen::Vector3d> placed_pos(n);
+  // A node the fit may place: not fitted yet, not a fork, not a twig.
+  auto movable = [&](std::uint32_t v) { return !fitted[v] && children[v] < 2 && hint[v] >= thin; };
   tbb::parallel_for(std::size_t(0), pieces.size(), [&](std::size_t k) {
     const Piece& piece = pieces[k];
+    // A chain is cut into pieces when any of its nodes is movable; a piece without one would be
+    // fitted for nothing (a third of the pieces of pytlidar_tree_1).
+    if (std::none_of(piece.nodes.begin(), piece.nodes.end(), movable)) return;
     const std::uint32_t first = piece.nodes.front(), last = piece.nodes.back();
     // The start line: through the piece's middle, from the node before it to its last node.
     const std::uint32_t before = parent[first] < n ? parent[first] : first;
@@ -217,7 +222,7 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
                         (r_max <= 0 || f.radius <= p.max_growth * r_max + p.spacing);
       if (!good) return;
       for (std::uint32_t v : piece.nodes) {
-        if (fitted[v] || children[v] >= 2 || hint[v] < thin) continue;
+        if (!movable(v)) continue;
         const Eigen::Vector3d x = pos[v];
         const Eigen::Vector3d a = f.point + (x - f.point).dot(f.direction) * f.direction;
         // The piece's nodes lie on the bark of the branch they stand for or inside it; a node
