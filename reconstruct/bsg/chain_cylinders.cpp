@@ -203,7 +203,13 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
       if (!f.valid) return;
       const Eigen::Vector3d off = f.point - centre;
       const double shift = (off - off.dot(f.direction) * f.direction).norm();
+      // The cylinder reaches beyond the gathering: gather wider, unless its axis is already
+      // farther from the chain than any accepted one may be (a twig's piece that found its
+      // parent: the wider gathering finds the same parent, at the same angle, and is rejected;
+      // two thirds of the regrowths on pytlidar_tree_1 were these).
+      const double max_angle_any = 40.0;
       if (shift + f.radius > 0.9 * reach && attempt < 5) {
+        if (std::abs(f.direction.dot(d0)) < std::cos(max_angle_any * M_PI / 180)) return;
         r0 = std::min(2 * r0, 1.3 * std::max(f.radius, shift));
         // A gathering wider than the trunk only collects other branches.
         if (r_max > 0 && r0 > p.max_growth * r_max + p.spacing) return;
@@ -213,7 +219,7 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
       // on its bark (the chain runs along it) or the parent of a twig (the twig leaves it at an
       // angle): only the first is accepted (15 degrees: 40 let the bundled broadleaf's twigs
       // onto their parents, precision within 2 x radius 0.966 instead of 0.978).
-      const double max_angle = f.radius > 1.5 * piece.radius ? 15.0 : 40.0;
+      const double max_angle = f.radius > 1.5 * piece.radius ? 15.0 : max_angle_any;
       const bool good = f.coverage >= p.min_coverage && f.inlier_fraction >= p.min_inliers &&
                         f.residual <= p.max_residual * f.radius + noise && f.radius >= p.spacing &&
                         f.axial_fill >= 0.6 &&
