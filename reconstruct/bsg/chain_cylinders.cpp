@@ -157,8 +157,13 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
   std::vector<std::uint8_t> placed(n, 0);
   std::vector<double> placed_radius(n, 0.0);
   std::vector<Eigen::Vector3d> placed_pos(n);
+  // A node the fit may place: not fitted yet, not a fork, not a twig.
+  auto movable = [&](std::uint32_t v) { return !fitted[v] && children[v] < 2 && hint[v] >= thin; };
   tbb::parallel_for(std::size_t(0), pieces.size(), [&](std::size_t k) {
     const Piece& piece = pieces[k];
+    // A chain is cut into pieces when any of its nodes is movable; a piece without one would be
+    // fitted for nothing (a third of the pieces of pytlidar_tree_1).
+    if (std::none_of(piece.nodes.begin(), piece.nodes.end(), movable)) return;
     const std::uint32_t first = piece.nodes.front(), last = piece.nodes.back();
     // The start line: through the piece's middle, from the node before it to its last node.
     const std::uint32_t before = parent[first] < n ? parent[first] : first;
@@ -198,7 +203,13 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
       if (!f.valid) return;
       const Eigen::Vector3d off = f.point - centre;
       const double shift = (off - off.dot(f.direction) * f.direction).norm();
+      // The cylinder reaches beyond the gathering: gather wider, unless its axis is already
+      // farther from the chain than any accepted one may be (a twig's piece that found its
+      // parent: the wider gathering finds the same parent, at the same angle, and is rejected;
+      // two thirds of the regrowths on pytlidar_tree_1 were these).
+      const double max_angle_any = 40.0;
       if (shift + f.radius > 0.9 * reach && attempt < 5) {
+        if (std::abs(f.direction.dot(d0)) < std::cos(max_angle_any * M_PI / 180)) return;
         r0 = std::min(2 * r0, 1.3 * std::max(f.radius, shift));
         // A gathering wider than the trunk only collects other branches.
         if (r_max > 0 && r0 > p.max_growth * r_max + p.spacing) return;
@@ -208,7 +219,7 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
       // on its bark (the chain runs along it) or the parent of a twig (the twig leaves it at an
       // angle): only the first is accepted (15 degrees: 40 let the bundled broadleaf's twigs
       // onto their parents, precision within 2 x radius 0.966 instead of 0.978).
-      const double max_angle = f.radius > 1.5 * piece.radius ? 15.0 : 40.0;
+      const double max_angle = f.radius > 1.5 * piece.radius ? 15.0 : max_angle_any;
       const bool good = f.coverage >= p.min_coverage && f.inlier_fraction >= p.min_inliers &&
                         f.residual <= p.max_residual * f.radius + noise && f.radius >= p.spacing &&
                         f.axial_fill >= 0.6 &&
@@ -217,7 +228,7 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
                         (r_max <= 0 || f.radius <= p.max_growth * r_max + p.spacing);
       if (!good) return;
       for (std::uint32_t v : piece.nodes) {
-        if (fitted[v] || children[v] >= 2 || hint[v] < thin) continue;
+        if (!movable(v)) continue;
         const Eigen::Vector3d x = pos[v];
         const Eigen::Vector3d a = f.point + (x - f.point).dot(f.direction) * f.direction;
         // The piece's nodes lie on the bark of the branch they stand for or inside it; a node

@@ -40,9 +40,16 @@ CircleFit circle_through(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
 // truncated quadratic so that the tighter of two circles wins.
 double consensus(const std::vector<Eigen::Vector2d>& pts, const std::vector<double>& w,
                  const CircleFit& f, double tau) {
+  // Most points are far from a candidate: they are skipped on their squared distance (bounds
+  // widened by a relative 1e-9, so no point within tau is skipped through rounding), and the
+  // square root is taken only of the others.
+  const double lo = f.radius > tau ? (f.radius - tau) * (f.radius - tau) * (1 - 1e-9) : 0.0;
+  const double hi = (f.radius + tau) * (f.radius + tau) * (1 + 1e-9);
   double score = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
-    const double e = ((pts[i] - f.centre).norm() - f.radius) / tau;
+    const double d2 = (pts[i] - f.centre).squaredNorm();
+    if (d2 < lo || d2 > hi) continue;
+    const double e = (std::sqrt(d2) - f.radius) / tau;
     if (std::abs(e) < 1) score += weight_of(w, i) * (1 - e * e);
   }
   return score;
@@ -51,13 +58,17 @@ double consensus(const std::vector<Eigen::Vector2d>& pts, const std::vector<doub
 }  // namespace
 
 double robust_scale(const std::vector<double>& e) {
+  std::vector<double> a = e;
+  return robust_scale_in_place(a);
+}
+
+double robust_scale_in_place(std::vector<double>& e) {
   // Unweighted: the weights are point counts of near-uniform voxels, and nth_element keeps the
   // fits cheap.
   if (e.empty()) return 0.0;
-  std::vector<double> a(e.size());
-  for (std::size_t i = 0; i < e.size(); ++i) a[i] = std::abs(e[i]);
-  const auto mid = a.begin() + std::ptrdiff_t(a.size() / 2);
-  std::nth_element(a.begin(), mid, a.end());
+  for (double& x : e) x = std::abs(x);
+  const auto mid = e.begin() + std::ptrdiff_t(e.size() / 2);
+  std::nth_element(e.begin(), mid, e.end());
   return 1.4826 * *mid;
 }
 
@@ -155,19 +166,21 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
     if (score > best) best = score, f = s;
   }
   if (!f.valid) return f;
-  std::vector<double> e(n), rw(n, 1.0);
+  std::vector<double> e(n), rw(n, 1.0), len(n);
   Eigen::Vector2d c = f.centre;
   double r = f.radius, scale = 0;
   // The scale comes from the points near the current circle (within 4 tau), so the points of
   // another branch do not inflate it and turn themselves into inliers.
   std::vector<double> near_e;
+  near_e.reserve(n);
   auto residuals = [&] {
     near_e.clear();
     for (std::size_t i = 0; i < n; ++i) {
-      e[i] = (pts[i] - c).norm() - r;
+      len[i] = (pts[i] - c).norm();  // kept for the Jacobian
+      e[i] = len[i] - r;
       if (std::abs(e[i]) < 4 * tau) near_e.push_back(e[i]);
     }
-    scale = std::max(near_e.empty() ? tau : robust_scale(near_e), noise);
+    scale = std::max(near_e.empty() ? tau : robust_scale_in_place(near_e), noise);
   };
   residuals();
   for (int it = 0; it < iterations; ++it) {
@@ -179,11 +192,9 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
     Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
     Eigen::Vector3d jte = Eigen::Vector3d::Zero();
     for (std::size_t i = 0; i < n; ++i) {
-      if (rw[i] <= 0) continue;
+      if (rw[i] <= 0 || !(len[i] > 0)) continue;
       const Eigen::Vector2d d = pts[i] - c;
-      const double len = d.norm();
-      if (!(len > 0)) continue;
-      const Eigen::Vector3d j(-d.x() / len, -d.y() / len, -1.0);
+      const Eigen::Vector3d j(-d.x() / len[i], -d.y() / len[i], -1.0);
       jtj += rw[i] * j * j.transpose();
       jte += rw[i] * j * e[i];
     }

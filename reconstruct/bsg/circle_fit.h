@@ -26,6 +26,8 @@ struct CircleFit {
 
 // 1.4826 x the median of |e|: the standard deviation of Gaussian residuals, robustly.
 double robust_scale(const std::vector<double>& e);
+// The same, reusing e's storage (its values are lost).
+double robust_scale_in_place(std::vector<double>& e);
 
 // The iteratively reweighted least-squares weight of a residual of u robust scales: Huber's
 // (k 1.345, a convex start) or, once the fit has settled, Tukey's biweight (c 4.685, outliers get

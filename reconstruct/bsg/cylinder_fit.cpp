@@ -45,6 +45,7 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   // the current axis each step.
   std::vector<double> e(n), rw(n), t(n), near_e;
   std::vector<Eigen::Vector3d> nrm(n);
+  near_e.reserve(n);
   const double tau = 2.5 * std::max(noise, 1e-12);
   double scale = 0;
   auto residuals = [&] {
@@ -58,7 +59,7 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
       e[i] = rho - r;
       if (std::abs(e[i]) < std::max(4 * tau, 0.5 * r)) near_e.push_back(e[i]);
     }
-    scale = std::max(near_e.empty() ? tau : robust_scale(near_e), noise);
+    scale = std::max(near_e.empty() ? tau : robust_scale_in_place(near_e), noise);
   };
   residuals();
   for (int it = 0; it < iterations; ++it) {
