@@ -7,7 +7,7 @@
 #include "backends/mesh/foliage_clouds.h"
 #include "backends/mesh/gltf_writer.h"
 #include "tests/backends/glb_reader.h"
-#include "tests/backends/synthetic_tree.h"
+#include "tests/mesh/synthetic_tree.h"
 
 using namespace ramus;
 using namespace ramus::mesh;
