@@ -156,6 +156,7 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
     go.lod = std::size_t(a.lod);
     go.wind = a.wind;
     go.wind_options.seed = seed;
+    go.seed = seed;
     go.name = set.name.empty() ? std::filesystem::path(grow.file).stem().string() : set.name;
     pieces::write_pieces_gltf(set, forest, go, output);
     std::string manifest;

@@ -28,6 +28,7 @@ struct PiecesGltfOptions {
   bool wind = false;    // add the wind clip of every tree (WindOptions seeded per tree)
   WindOptions wind_options;
   std::string name = "pieces";  // the scene and the root node
+  std::uint64_t seed = 1;       // the bark tiles (bark_tiles.h) and the leaf cards (foliage.h)
 };
 
 using PiecesGltfBytes = mesh::GltfBytes;  // a GLB, or a .gltf's JSON and its .bin
