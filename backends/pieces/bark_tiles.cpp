@@ -153,4 +153,19 @@ std::array<double, 2> tile_coords(const PieceMesh& mesh, std::size_t quad, int c
   return {double(i) / n, 1.0 - double(j) / n};
 }
 
+std::vector<float> bark_uvs(const PieceMesh& mesh, std::span<const std::uint16_t> tiles,
+                            const texture::TileAtlas& atlas) {
+  std::vector<float> uv;
+  uv.reserve(mesh.quads.size() * 8);
+  for (std::size_t q = 0; q < mesh.quads.size(); ++q) {
+    const std::size_t base = q < mesh.quad_source.size() ? mesh.quad_source[q] : q;
+    for (int k = 0; k < 4; ++k) {
+      const std::array<double, 2> st = tile_coords(mesh, q, k);
+      const std::array<float, 2> at = atlas.uv(tiles[base], st[0], st[1]);
+      uv.insert(uv.end(), at.begin(), at.end());
+    }
+  }
+  return uv;
+}
+
 }  // namespace ramus::pieces

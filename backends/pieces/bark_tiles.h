@@ -17,9 +17,11 @@
 
 #include <array>
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "backends/pieces/pieces.h"
+#include "backends/texture/tile_atlas.h"
 
 namespace ramus::pieces {
 
@@ -37,5 +39,10 @@ BarkTiling bark_tiling(const PieceSet& set, const Tree& tree, int edges, std::ui
 // tile: (s, t) with s from west to east and t from north to south, 0..1 (a tessellated level
 // splits every base quad into segments x segments quads, lod.cpp).
 std::array<double, 2> tile_coords(const PieceMesh& mesh, std::size_t quad, int corner);
+
+// The bark's texture coordinates (u, v per corner, 4 corners per quad, quad by quad) of a
+// level-of-detail mesh whose base quads show `tiles` of `atlas`.
+std::vector<float> bark_uvs(const PieceMesh& mesh, std::span<const std::uint16_t> tiles,
+                            const texture::TileAtlas& atlas);
 
 }  // namespace ramus::pieces

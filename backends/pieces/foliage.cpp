@@ -48,6 +48,20 @@ std::vector<FoliageCloud> foliage_clouds(const PieceSet& set, const Tree& tree,
   return out;
 }
 
+std::vector<FoliageCloud> forest_clouds(const PieceSet& set, const Forest& forest,
+                                        const PiecesLayout& layout) {
+  std::vector<FoliageCloud> all;
+  for (std::size_t k = 0; k < forest.trees.size(); ++k) {
+    const std::uint32_t base = layout.tree_bone_base[k];
+    const std::span<const Trs> world(layout.bone_world.data() + base, forest.trees[k].bones.size());
+    for (FoliageCloud c : foliage_clouds(set, forest.trees[k], world)) {
+      c.bone += base;
+      all.push_back(c);
+    }
+  }
+  return all;
+}
+
 LeafCards leaf_cards(std::span<const FoliageCloud> clouds, std::uint64_t seed, int per_cloud) {
   LeafCards out;
   for (std::size_t k = 0; k < clouds.size(); ++k) {

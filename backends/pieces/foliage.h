@@ -12,6 +12,7 @@
 #include <span>
 #include <vector>
 
+#include "backends/pieces/output_layout.h"
 #include "backends/pieces/pieces.h"
 
 namespace ramus::pieces {
@@ -27,6 +28,10 @@ struct FoliageCloud {
 // order and rim order.
 std::vector<FoliageCloud> foliage_clouds(const PieceSet& set, const Tree& tree,
                                          std::span<const Trs> world);
+
+// The clouds of every tree of a forest, tree by tree, with `bone` the global bone (PiecesLayout).
+std::vector<FoliageCloud> forest_clouds(const PieceSet& set, const Forest& forest,
+                                        const PiecesLayout& layout);
 
 // Leaf cards filling the clouds: one-faced quads (draw them double-sided), `per_cloud` each,
 // placed and turned by ramus::Rng from `seed`. Positions and normals in the world of the clouds.

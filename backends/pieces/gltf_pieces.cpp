@@ -23,54 +23,13 @@
 #include "backends/mesh/up_axis.h"
 #include "backends/pieces/bark_tiles.h"
 #include "backends/pieces/foliage.h"
+#include "backends/pieces/skin_vertex.h"
 #include "backends/texture/bark_maps.h"
 
 namespace ramus::pieces {
 namespace {
 
 using tinygltf::Value;
-
-// One vertex's skin binding as glTF wants it: no joint twice among the non-zero weights,
-// unused slots joint 0 with weight 0, float weights summing to one.
-struct SkinVertex {
-  std::array<std::uint32_t, 4> joints{0, 0, 0, 0};
-  std::array<float, 4> weights{0, 0, 0, 0};
-};
-
-SkinVertex normalize_skin(const std::array<std::uint16_t, 4>& joints,
-                          const std::array<float, 4>& weights, std::uint32_t offset) {
-  SkinVertex v;
-  int used = 0;
-  for (int s = 0; s < 4; ++s) {
-    if (!(weights[s] > 0)) continue;
-    const std::uint32_t j = offset + joints[s];
-    int at = 0;
-    while (at < used && v.joints[at] != j) ++at;
-    if (at == used) {
-      v.joints[used] = j;
-      v.weights[used++] = weights[s];
-    } else {
-      v.weights[at] += weights[s];
-    }
-  }
-  if (used == 0) {  // an unbound vertex follows the piece's root joint
-    v.joints[0] = offset;
-    v.weights[0] = 1;
-    return v;
-  }
-  double sum = 0;
-  for (int s = 0; s < used; ++s) sum += v.weights[s];
-  int biggest = 0;
-  for (int s = 0; s < used; ++s) {
-    v.weights[s] = float(v.weights[s] / sum);
-    if (v.weights[s] > v.weights[biggest]) biggest = s;
-  }
-  float rest = 0;
-  for (int s = 0; s < used; ++s)
-    if (s != biggest) rest += v.weights[s];
-  v.weights[biggest] = 1.0f - rest;
-  return v;
-}
 
 std::string node_safe(const std::string& s) {
   std::string out;
@@ -174,23 +133,6 @@ void append_triangles(const PieceMesh& mesh, std::uint32_t base, std::vector<std
   }
 }
 
-// The bark's texture coordinates of a level-of-detail mesh, corner by corner: each base quad
-// shows its tile of the atlas (bark_tiles.h), a tessellated quad its part of it.
-std::vector<float> tiled_uvs(const PieceMesh& mesh, std::span<const std::uint16_t> tiles) {
-  const texture::TileAtlas& atlas = texture::bundled_bark_atlas();
-  std::vector<float> uv;
-  uv.reserve(mesh.quads.size() * 8);
-  for (std::size_t q = 0; q < mesh.quads.size(); ++q) {
-    const std::size_t base = q < mesh.quad_source.size() ? mesh.quad_source[q] : q;
-    for (int k = 0; k < 4; ++k) {
-      const std::array<double, 2> st = tile_coords(mesh, q, k);
-      const std::array<float, 2> at = atlas.uv(tiles[base], st[0], st[1]);
-      uv.insert(uv.end(), at.begin(), at.end());
-    }
-  }
-  return uv;
-}
-
 const PieceMesh& lod_mesh(const PieceSet& set, std::uint32_t type, std::size_t lod) {
   const PieceType& t = set.types[type];
   if (lod >= t.lods.size()) {
@@ -253,7 +195,7 @@ int add_piece_mesh(Builder& b, const PieceSet& set, std::uint32_t type, std::siz
   for (const auto& q : m.quads) {
     for (std::uint32_t v : q) sv.add(m, v, m.positions[v], m.normals.at(v), 0);
   }
-  sv.uv = tiled_uvs(m, tiles);
+  sv.uv = bark_uvs(m, tiles, texture::bundled_bark_atlas());
   append_triangles(m, 0, sv.idx);
   const bool wide = set.types[type].joints.size() > 255;
   const tinygltf::Primitive prim = sv.primitive(b, material, wide, skinned);
@@ -370,15 +312,7 @@ Value json_vec3(const Vec3& v) { return Value(Value::Array{Value(v.x), Value(v.y
 // gets each cloud's centre and radius (glTF's y-up world) for the foliage extras.
 int add_leaves(Builder& b, const PieceSet& set, const Forest& forest, const PiecesLayout& layout,
                const PiecesGltfOptions& o, bool skinned, Value::Array& clouds) {
-  std::vector<FoliageCloud> all;
-  for (std::size_t k = 0; k < forest.trees.size(); ++k) {
-    const std::uint32_t base = layout.tree_bone_base[k];
-    const std::span<const Trs> world(layout.bone_world.data() + base, forest.trees[k].bones.size());
-    for (FoliageCloud c : foliage_clouds(set, forest.trees[k], world)) {
-      c.bone += base;
-      all.push_back(c);
-    }
-  }
+  const std::vector<FoliageCloud> all = forest_clouds(set, forest, layout);
   if (all.empty()) return -1;
   for (const FoliageCloud& c : all) {
     Value::Object cloud;
@@ -492,8 +426,8 @@ void build_canonical(Builder& b, const PieceSet& set, const Forest& forest,
     } else if (fresh) {
       tinygltf::Mesh copy = model.meshes[first_mesh[inst.type]];
       copy.primitives[0].attributes["TEXCOORD_0"] =
-          b.floats(tiled_uvs(lod_mesh(set, inst.type, o.lod), tiles), 2, TINYGLTF_TYPE_VEC2,
-                   TINYGLTF_TARGET_ARRAY_BUFFER, true);
+          b.floats(bark_uvs(lod_mesh(set, inst.type, o.lod), tiles, texture::bundled_bark_atlas()),
+                   2, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
       model.meshes.push_back(std::move(copy));
       it->second = int(model.meshes.size() - 1);
     }
@@ -561,7 +495,7 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
       for (std::uint32_t v : q) sv.add(m, v, sp.positions[v], sp.normals[v], inst.bone_offset);
     }
     const std::vector<std::uint16_t>& tiles = bark[inst.tree].tiles[inst.piece];
-    const std::vector<float> uv = tiled_uvs(m, tiles);
+    const std::vector<float> uv = bark_uvs(m, tiles, texture::bundled_bark_atlas());
     sv.uv.insert(sv.uv.end(), uv.begin(), uv.end());
     append_triangles(m, base, sv.idx);
     Value::Object p;
