@@ -50,6 +50,10 @@ std::array<float, 4> unit_quat(const Quat& q) {
 
 Vec3 y_up(const Vec3& v) { return mesh::z_up_to_y_up(v); }
 
+const texture::TileAtlas& atlas_of(const PiecesGltfOptions& o) {
+  return o.bark ? *o.bark : texture::bundled_bark_atlas();
+}
+
 class Builder : public mesh::GltfBufferBuilder {
  public:
   int view(const void* data, std::size_t bytes, int target) {
@@ -87,10 +91,11 @@ class Builder : public mesh::GltfBufferBuilder {
   }
 
   // The bark: the tile set's padded atlas (docs/textures.md), one tile per quad.
-  int material() {
+  int material(const PiecesGltfOptions& o) {
     tinygltf::Material m;
     m.name = "bark";
-    const texture::BarkTextures& bark = texture::bundled_bark_atlas_textures();
+    const texture::BarkTextures bark =
+        o.bark ? texture::bark_atlas_textures(*o.bark) : texture::bundled_bark_atlas_textures();
     m.pbrMetallicRoughness.baseColorTexture.index =
         add_texture(bark.base, "bark", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE, bark.mime);
     m.normalTexture.index =
@@ -189,13 +194,14 @@ struct SkinnedVertices {
 // (piece-local joints), otherwise the same binding goes into the custom _JOINTS_0/_WEIGHTS_0 for
 // instancing shaders. Every quad has its own four corners (the tiles differ from quad to quad).
 int add_piece_mesh(Builder& b, const PieceSet& set, std::uint32_t type, std::size_t lod,
-                   int material, bool skinned, std::span<const std::uint16_t> tiles) {
+                   int material, bool skinned, std::span<const std::uint16_t> tiles,
+                   const texture::TileAtlas& atlas) {
   const PieceMesh& m = lod_mesh(set, type, lod);
   SkinnedVertices sv;
   for (const auto& q : m.quads) {
     for (std::uint32_t v : q) sv.add(m, v, m.positions[v], m.normals.at(v), 0);
   }
-  sv.uv = bark_uvs(m, tiles, texture::bundled_bark_atlas());
+  sv.uv = bark_uvs(m, tiles, atlas);
   append_triangles(m, 0, sv.idx);
   const bool wide = set.types[type].joints.size() > 255;
   const tinygltf::Primitive prim = sv.primitive(b, material, wide, skinned);
@@ -298,8 +304,7 @@ std::vector<BarkTiling> forest_bark(const PieceSet& set, const Forest& forest,
                                     const PiecesGltfOptions& o) {
   std::vector<BarkTiling> out;
   for (std::size_t k = 0; k < forest.trees.size(); ++k) {
-    out.push_back(
-        bark_tiling(set, forest.trees[k], texture::bundled_bark_atlas().edges, o.seed + k));
+    out.push_back(bark_tiling(set, forest.trees[k], atlas_of(o).edges, o.seed + k));
   }
   return out;
 }
@@ -398,7 +403,7 @@ Value scene_extras(const PieceSet& set, const Forest& forest, const PiecesLayout
 
 void build_canonical(Builder& b, const PieceSet& set, const Forest& forest,
                      const PiecesLayout& layout, const PiecesGltfOptions& o) {
-  const int material = b.material();
+  const int material = b.material(o);
   const std::vector<BarkTiling> bark = forest_bark(set, forest, o);
   std::vector<int> ibm_of(set.types.size(), -1);
   for (std::uint32_t t = 0; t < set.types.size(); ++t) {
@@ -422,12 +427,12 @@ void build_canonical(Builder& b, const PieceSet& set, const Forest& forest,
     auto [it, fresh] = mesh_of.try_emplace({inst.type, tiles}, -1);
     if (fresh && first_mesh[inst.type] < 0) {
       it->second = first_mesh[inst.type] =
-          add_piece_mesh(b, set, inst.type, o.lod, material, true, tiles);
+          add_piece_mesh(b, set, inst.type, o.lod, material, true, tiles, atlas_of(o));
     } else if (fresh) {
       tinygltf::Mesh copy = model.meshes[first_mesh[inst.type]];
       copy.primitives[0].attributes["TEXCOORD_0"] =
-          b.floats(bark_uvs(lod_mesh(set, inst.type, o.lod), tiles, texture::bundled_bark_atlas()),
-                   2, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+          b.floats(bark_uvs(lod_mesh(set, inst.type, o.lod), tiles, atlas_of(o)), 2,
+                   TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
       model.meshes.push_back(std::move(copy));
       it->second = int(model.meshes.size() - 1);
     }
@@ -472,7 +477,7 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
                       std::to_string(layout.bone_count()) + " bones (use fewer trees or " +
                       "the canonical encoding)");
   }
-  const int material = b.material();
+  const int material = b.material(o);
   // The bind pose of the merged mesh is the written pose: vertices are the skinned positions,
   // each bone's inverse bind matrix the inverse of its world transform.
   std::vector<Mat4> world(layout.bone_count()), ibm(layout.bone_count());
@@ -495,7 +500,7 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
       for (std::uint32_t v : q) sv.add(m, v, sp.positions[v], sp.normals[v], inst.bone_offset);
     }
     const std::vector<std::uint16_t>& tiles = bark[inst.tree].tiles[inst.piece];
-    const std::vector<float> uv = bark_uvs(m, tiles, texture::bundled_bark_atlas());
+    const std::vector<float> uv = bark_uvs(m, tiles, atlas_of(o));
     sv.uv.insert(sv.uv.end(), uv.begin(), uv.end());
     append_triangles(m, base, sv.idx);
     Value::Object p;
@@ -549,7 +554,7 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
 
 void build_instanced(Builder& b, const PieceSet& set, const Forest& forest,
                      const PiecesLayout& layout, const PiecesGltfOptions& o) {
-  const int material = b.material();
+  const int material = b.material(o);
   auto& model = b.model();
   model.extensionsUsed.push_back("EXT_mesh_gpu_instancing");
   tinygltf::Scene scene;
@@ -568,7 +573,7 @@ void build_instanced(Builder& b, const PieceSet& set, const Forest& forest,
     // Every instance draws one mesh: all quads show tile 0, whose four edges share colour 0, so
     // it joins itself; an engine's shader reads the per-quad tiles from the tile table.
     const std::vector<std::uint16_t> tile0(set.types[t].lods[0].quads.size(), 0);
-    const int mesh = add_piece_mesh(b, set, t, o.lod, material, false, tile0);
+    const int mesh = add_piece_mesh(b, set, t, o.lod, material, false, tile0, atlas_of(o));
     std::vector<float> tr, rot, scl, bone_offset, tile;
     std::vector<std::uint16_t> table;
     for (std::uint32_t i = r.first; i < r.first + r.count; ++i) {

@@ -45,13 +45,22 @@ TEST_CASE("ramus tiles writes an atlas that ramus build --bark takes", "[assets]
   const fs::path tree = dir.path / "tree.glb";
   ramus_ok({"build", example("trees/broadleaf.ramus"), "--lod", "1", "--bark", four.string(),
             "--bark-edges", "4", "-o", tree.string()});
+  // The pieces take it too, one tile per quad.
+  const fs::path pieces = dir.path / "pieces.glb";
+  ramus_ok({"build", example("pieces/almond.ramus"), "--target", "pieces", "--bark", four.string(),
+            "--bark-edges", "4", "-o", pieces.string()});
   std::string report;
-  CHECK(validates({tree}, report));
+  CHECK(validates({tree, pieces}, report));
   INFO(report);
   // Not an atlas of 4 edge colours (256 px is 16 tiles of 16 px, below 32), and not a picture.
   cli_test::CliResult r =
       cli_test::run_ramus({"build", example("trees/broadleaf.ramus"), "--bark", atlas.string(),
                            "--bark-edges", "4", "-o", (dir.path / "x.glb").string()});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("--bark") != std::string::npos);
+  r = cli_test::run_ramus({"build", example("pieces/almond.ramus"), "--target", "pieces", "--bark",
+                           atlas.string(), "--bark-edges", "4", "-o",
+                           (dir.path / "x.glb").string()});
   CHECK(r.status == 1);
   CHECK(r.out.find("--bark") != std::string::npos);
   r = cli_test::run_ramus(
