@@ -1,10 +1,8 @@
 #include "backends/pieces/bark_tiles.h"
 
-#include <cmath>
 #include <map>
 #include <numeric>
 
-#include "backends/pieces/piece_build.h"
 #include "backends/texture/tile_set.h"
 #include "core/rng.h"
 
@@ -53,94 +51,67 @@ struct UnionFind {
   void join(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
 };
 
-std::vector<Trs> rest_world(const Tree& tree) {
-  std::vector<Trs> world(tree.bones.size());
-  for (std::size_t i = 0; i < tree.bones.size(); ++i) {
-    const std::uint32_t p = tree.bones[i].parent;
-    world[i] = p == kNone ? tree.pose[i] : world[p] * tree.pose[i];
-  }
-  return world;
-}
-
 }  // namespace
 
-BarkTiling bark_tiling(const PieceSet& set, const Tree& tree, int edges, std::uint64_t seed) {
-  std::vector<EdgeSides> sides(set.types.size());
-  for (std::size_t t = 0; t < set.types.size(); ++t) sides[t] = edge_sides(set.types[t].lods[0]);
-  std::vector<std::uint32_t> first(tree.pieces.size() + 1, 0);  // first slot (quad side) per piece
-  for (std::size_t i = 0; i < tree.pieces.size(); ++i) {
-    first[i + 1] =
-        first[i] + 4 * std::uint32_t(set.types[tree.pieces[i].type].lods[0].quads.size());
-  }
-  auto slot = [&](std::size_t piece, const Side& s) { return first[piece] + 4 * s.quad + s.side; };
-  BarkTiling out;
-  UnionFind colours(first.back());
-  // Inside every piece.
-  for (std::size_t i = 0; i < tree.pieces.size(); ++i) {
-    for (const auto& [edge, list] : sides[tree.pieces[i].type]) {
-      if (list.size() != 2) continue;
-      ++out.joins;
-      if (regular(list[0], list[1], list[0].from == list[1].to)) {
-        colours.join(slot(i, list[0]), slot(i, list[1]));
-      } else {
-        ++out.irregular_joins;
-      }
-    }
-  }
-  // Across joints: the child's root rim corner k lies on the parent's leaf rim corner k + twist;
-  // the twist is found from the rest pose (fitted trees aim their joints, assembled ones twist).
-  const std::vector<Trs> world = rest_world(tree);
-  for (std::size_t i = 0; i < tree.pieces.size(); ++i) {
-    const PlacedPiece& child = tree.pieces[i];
-    if (child.parent == kNone) continue;
-    const PlacedPiece& parent = tree.pieces[child.parent];
-    const PieceType& ct = set.types[child.type];
-    const PieceType& pt = set.types[parent.type];
-    const Rim& leaf = pt.leaves.at(child.parent_leaf);
-    const Trs& rim_world = world[parent.bone_offset + leaf.joint];
-    const Trs& root_world = world[child.bone_offset + ct.root.joint];
-    const Vec3 c0 = root_world.point(canonical_corner(0));
-    int twist = 0;
-    double best = 1e300;
-    for (int j = 0; j < kRimCorners; ++j) {
-      const double d = distance(rim_world.point(canonical_corner(j)), c0);
-      if (d < best) best = d, twist = j;
-    }
-    for (int k = 0; k < kRimCorners; ++k) {
-      const int j = (k + twist) % kRimCorners, k1 = (k + 1) % kRimCorners;
-      const int j1 = (j + 1) % kRimCorners;
-      const Side* cs = find_side(sides[child.type], ct.root.corners[k], ct.root.corners[k1]);
-      const Side* ps = find_side(sides[parent.type], leaf.corners[j], leaf.corners[j1]);
-      if (cs == nullptr || ps == nullptr) continue;
-      ++out.joins;
-      // Reversed: the child runs corner k -> k+1 while the parent runs j+1 -> j, or the other way.
-      const bool child_forward = cs->from == ct.root.corners[k];
-      const bool parent_forward = ps->from == leaf.corners[j];
-      if (regular(*cs, *ps, child_forward != parent_forward)) {
-        colours.join(slot(i, *cs), slot(child.parent, *ps));
-      } else {
-        ++out.irregular_joins;
-      }
-    }
-  }
-  // A colour per class of tied sides, then the tile with each quad's four colours.
-  Rng rng = Rng::stream(seed, 0x6261726b);  // "bark"
-  std::vector<int> colour(first.back(), -1);
-  for (std::uint32_t s = 0; s < first.back(); ++s) {
-    const std::uint32_t root = colours.find(s);
-    if (colour[root] < 0) colour[root] = int(rng.below(std::uint64_t(edges)));
-    colour[s] = colour[root];
-  }
+std::size_t irregular_joins(const PieceMesh& base) {
+  std::size_t n = 0;
+  for (const auto& [edge, list] : edge_sides(base))
+    n += list.size() == 2 && !regular(list[0], list[1], list[0].from == list[1].to);
+  return n;
+}
+
+BarkTiling bark_tiling(const PieceSet& set, const Tree& tree, int edges, std::uint64_t seed,
+                       int variants) {
   texture::TileSet ids;
   ids.edges = edges;
-  for (std::size_t i = 0; i < tree.pieces.size(); ++i) {
-    const std::size_t quads = set.types[tree.pieces[i].type].lods[0].quads.size();
-    std::vector<std::uint16_t> tiles(quads);
-    for (std::size_t q = 0; q < quads; ++q) {
-      const int* c = &colour[first[i] + 4 * q];  // sides south, east, north, west
-      tiles[q] = std::uint16_t(ids.id_of({c[2], c[0], c[3], c[1]}));
+  // Per piece type, its variants: the sides of its quads tied along regular joins, the rim
+  // sides to colour 0, every other class of sides a colour of its own.
+  std::vector<std::vector<std::vector<std::uint16_t>>> of_type(set.types.size());
+  std::vector<char> used(set.types.size(), 0);
+  for (const PlacedPiece& p : tree.pieces) used[p.type] = 1;
+  for (std::uint32_t t = 0; t < set.types.size(); ++t) {
+    if (!used[t]) continue;
+    const PieceType& type = set.types[t];
+    const PieceMesh& m = type.lods[0];
+    const EdgeSides sides = edge_sides(m);
+    UnionFind tied(4 * m.quads.size());
+    auto slot = [](const Side& s) { return 4 * s.quad + std::uint32_t(s.side); };
+    for (const auto& [edge, list] : sides) {
+      if (list.size() == 2 && regular(list[0], list[1], list[0].from == list[1].to))
+        tied.join(slot(list[0]), slot(list[1]));
     }
-    out.tiles.push_back(std::move(tiles));
+    std::vector<char> on_rim(4 * m.quads.size(), 0);
+    auto mark_rim = [&](const Rim& rim) {
+      for (int k = 0; k < kRimCorners; ++k) {
+        const Side* s = find_side(sides, rim.corners[k], rim.corners[(k + 1) % kRimCorners]);
+        if (s != nullptr) on_rim[tied.find(slot(*s))] = 1;
+      }
+    };
+    mark_rim(type.root);
+    for (const Rim& rim : type.leaves) mark_rim(rim);
+    for (int v = 0; v < variants; ++v) {
+      Rng rng = Rng::stream(seed, t, 0x62617200u + std::uint64_t(v));  // "bar" + variant
+      std::vector<int> colour(4 * m.quads.size(), -1);
+      for (std::uint32_t s = 0; s < colour.size(); ++s) {
+        const std::uint32_t root = tied.find(s);
+        if (colour[root] < 0)
+          colour[root] = on_rim[root] ? 0 : int(rng.below(std::uint64_t(edges)));
+        colour[s] = colour[root];
+      }
+      std::vector<std::uint16_t> tiles(m.quads.size());
+      for (std::size_t q = 0; q < tiles.size(); ++q) {
+        const int* c = &colour[4 * q];  // sides south, east, north, west
+        tiles[q] = std::uint16_t(ids.id_of({c[2], c[0], c[3], c[1]}));
+      }
+      of_type[t].push_back(std::move(tiles));
+    }
+  }
+  BarkTiling out;
+  Rng pick = Rng::stream(seed, 0x7069636b);  // "pick"
+  for (const PlacedPiece& p : tree.pieces) {
+    const std::uint32_t v = std::uint32_t(pick.below(std::uint64_t(variants)));
+    out.variant.push_back(v);
+    out.tiles.push_back(of_type[p.type][v]);
   }
   return out;
 }

@@ -1,18 +1,21 @@
 // Per-quad bark tiles of an assembled tree (Burkus et al. 2017, section 5.1): every base quad of
 // every placed piece shows one tile of a Wang tile set (backends/texture/tile_set.h, K edge
 // colours per direction), chosen so that any two quads sharing an edge show tiles whose touching
-// edges have the same colour, also across the joints between pieces. 5.1 fixes one colour per
-// model edge and notes that "our method can easily be generalized to any sets of tiles with any
-// edge colorings, e.g. using the random tile placement described by Cohen et al."; this is that
-// generalization: every edge of the tree's quad surface draws a random colour (ramus::Rng), and
-// every quad takes the tile with its four colours (the set is complete, so one always exists).
+// edges have the same colour. As in 5.1 the rims, where pieces meet, have a fixed colour (0), so
+// pieces join whatever their neighbours; inside a piece every edge draws a colour at random, the
+// generalization 5.1 names ("any sets of tiles with any edge colorings, e.g. using the random
+// tile placement described by Cohen et al."), and every quad takes the tile with its four colours
+// (the set is complete, so one always exists). Each piece type gets a few such variants and each
+// placed piece one of them at random, so instances differ while a glTF file needs only a few
+// meshes per type (one per variant: the tiles live in the texture coordinates).
 //
 // A quad's corners a b c d (PieceMesh::quads) span its tile as south-west, south-east,
 // north-east, north-west: edge a-b is the tile's south edge, b-c east, c-d north, d-a west. Two
 // quads join regularly when the shared edge is one's north and the other's south (or east and
 // west), traversed in opposite directions; only such joins can continue the tile pattern. The
-// built-in pieces join regularly everywhere except along the ridges of their forks (two quads
-// meet south edge to south edge there), where the colours are drawn independently.
+// built-in pieces join regularly everywhere, across their rims too, except along the ridges of
+// their forks (two quads meet south edge to south edge there), where the colours are drawn
+// independently.
 #pragma once
 
 #include <array>
@@ -28,12 +31,16 @@ namespace ramus::pieces {
 struct BarkTiling {
   // Per placed piece, per base quad: the tile id in the set's atlas (row * K^2 + column).
   std::vector<std::vector<std::uint16_t>> tiles;
-  std::size_t joins = 0;  // quad edges shared by two quads (inside pieces and across joints)
-  std::size_t irregular_joins = 0;  // of those, the ones whose colours are not tied
+  std::vector<std::uint32_t> variant;  // per placed piece: which of its type's variants
 };
 
-// The tiles for a set with `edges` colours per direction (1, 2 or 4), from `seed`.
-BarkTiling bark_tiling(const PieceSet& set, const Tree& tree, int edges, std::uint64_t seed);
+// The tiles for a set with `edges` colours per direction (1, 2 or 4): `variants` per piece type,
+// one per placed piece, all from `seed`.
+BarkTiling bark_tiling(const PieceSet& set, const Tree& tree, int edges, std::uint64_t seed,
+                       int variants = 8);
+
+// The joins of a base mesh whose sides are not tied (the ridges of forks and trifurcations).
+std::size_t irregular_joins(const PieceMesh& base);
 
 // Where corner `corner` (0..3) of quad `quad` of a level-of-detail mesh lies in its base quad's
 // tile: (s, t) with s from west to east and t from north to south, 0..1 (a tessellated level

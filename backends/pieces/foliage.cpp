@@ -62,12 +62,26 @@ std::vector<FoliageCloud> forest_clouds(const PieceSet& set, const Forest& fores
   return all;
 }
 
-LeafCards leaf_cards(std::span<const FoliageCloud> clouds, std::uint64_t seed, int per_cloud) {
+std::vector<int> cards_per_cloud(std::span<const FoliageCloud> clouds, int budget) {
+  double area = 0;
+  for (const FoliageCloud& c : clouds) area += c.radius * c.radius;
+  std::vector<int> out;
+  for (const FoliageCloud& c : clouds) {
+    const double share = area > 0 ? budget * c.radius * c.radius / area : 0;
+    out.push_back(std::clamp(int(std::lround(share)), 8, 90));
+  }
+  return out;
+}
+
+LeafCards leaf_cards(std::span<const FoliageCloud> clouds, std::uint64_t seed, int budget) {
   LeafCards out;
+  const std::vector<int> counts = cards_per_cloud(clouds, budget);
   for (std::size_t k = 0; k < clouds.size(); ++k) {
     const FoliageCloud& c = clouds[k];
-    Rng rng = Rng::stream(seed, 0x6c656166, k);             // "leaf"
-    const double len = 0.26 * c.radius, width = 0.5 * len;  // the leaf texture is 1 : 2
+    const int per_cloud = counts[k];
+    Rng rng = Rng::stream(seed, 0x6c656166, k);  // "leaf"
+    const double len = std::min(0.26 * std::sqrt(90.0 / per_cloud), 0.6) * c.radius;
+    const double width = 0.5 * len;  // the leaf texture is 1 : 2
     for (int n = 0; n < per_cloud; ++n) {
       // Denser towards the surface of the cloud, where leaves catch the light.
       const Vec3 dir = random_unit(rng);

@@ -33,14 +33,21 @@ std::vector<FoliageCloud> foliage_clouds(const PieceSet& set, const Tree& tree,
 std::vector<FoliageCloud> forest_clouds(const PieceSet& set, const Forest& forest,
                                         const PiecesLayout& layout);
 
-// Leaf cards filling the clouds: one-faced quads (draw them double-sided), `per_cloud` each,
-// placed and turned by ramus::Rng from `seed`. Positions and normals in the world of the clouds.
+// How many leaf cards each cloud gets: `budget` shared in proportion to the clouds' areas
+// (radius squared), at least 8 and at most 90 per cloud (a tree of many small tips gets fewer,
+// larger leaves per tip; the file stays a few MB for thousands of tips).
+std::vector<int> cards_per_cloud(std::span<const FoliageCloud> clouds, int budget);
+
+// Leaf cards filling the clouds: one-faced quads (draw them double-sided), placed and turned by
+// ramus::Rng from `seed`; a cloud with n cards gets leaves 0.26 x radius x sqrt(90 / n) long (at
+// most 0.6 x radius), so fewer cards cover about as much. Positions and normals in the world of
+// the clouds.
 struct LeafCards {
   std::vector<Vec3> positions, normals;
   std::vector<std::array<float, 2>> uvs;  // leaf-card coordinates (leaf_shape.h)
   std::vector<std::uint32_t> bones;       // per vertex: its cloud's bone
   std::vector<std::uint32_t> indices;     // triangles
 };
-LeafCards leaf_cards(std::span<const FoliageCloud> clouds, std::uint64_t seed, int per_cloud = 90);
+LeafCards leaf_cards(std::span<const FoliageCloud> clouds, std::uint64_t seed, int budget = 3000);
 
 }  // namespace ramus::pieces
