@@ -178,7 +178,7 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
     }
     if (!a.preview.empty()) {
       const mesh::TreeMesh posed =
-          pieces::posed_forest_mesh(set, forest, set.lod_segments.size() - 1);
+          pieces::posed_forest_mesh(set, forest, set.lod_segments.size() - 1, seed);
       preview::write_preview(posed, a.preview, preview::PreviewOptions{});
     }
     if (!quiet) {
