@@ -13,6 +13,7 @@
 #include "backends/pieces/output_posed_mesh.h"
 #include "backends/pieces/pieces.h"
 #include "backends/preview/preview.h"
+#include "backends/texture/bark_maps.h"
 #include "cli/defines.h"
 #include "cli/grow_args.h"
 #include "cli/output_path.h"
@@ -156,6 +157,17 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
     go.lod = std::size_t(a.lod);
     go.wind = a.wind;
     go.wind_options.seed = seed;
+    go.seed = seed;
+    if (!a.bark.empty()) {
+      try {
+        go.bark = std::make_shared<const texture::TileAtlas>(texture::bark_atlas(
+            texture::tile_set_from_atlas(texture::read_image(a.bark), a.bark_edges)));
+      } catch (const texture::ImageError& e) {
+        throw UserError(e.what());
+      } catch (const std::invalid_argument& e) {
+        throw UserError("--bark " + a.bark + ": " + e.what());
+      }
+    }
     go.name = set.name.empty() ? std::filesystem::path(grow.file).stem().string() : set.name;
     pieces::write_pieces_gltf(set, forest, go, output);
     std::string manifest;
@@ -166,7 +178,7 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
     }
     if (!a.preview.empty()) {
       const mesh::TreeMesh posed =
-          pieces::posed_forest_mesh(set, forest, set.lod_segments.size() - 1);
+          pieces::posed_forest_mesh(set, forest, set.lod_segments.size() - 1, seed);
       preview::write_preview(posed, a.preview, preview::PreviewOptions{});
     }
     if (!quiet) {

@@ -18,6 +18,8 @@ struct PiecesBuildArgs {
   std::string instance_buffer;  // also write the engine-ready instance buffer here
   std::string preview;          // also draw the posed trees into this .png/.svg
   std::string block;            // the pieces block (default: the first)
+  std::string bark;             // --bark: a tile set atlas; empty for the bundled set
+  int bark_edges = 2;
 };
 
 // Adds --flatten, --gpu-instancing, --poses, --wind, --instance-buffer, --preview and --pieces

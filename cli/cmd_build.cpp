@@ -58,9 +58,9 @@ const std::vector<std::string>& target_options(const std::string& target) {
   static const std::vector<std::string> mesh = {
       "--lod",        "--lod-files", "--up",       "--pipe-exponent", "--leaves",
       "--leaf-scale", "--wind",      "--compress", "--bark",          "--bark-edges"};
-  static const std::vector<std::string> pieces = {"--lod",     "--flatten", "--gpu-instancing",
-                                                  "--poses",   "--wind",    "--instance-buffer",
-                                                  "--preview", "--pieces"};
+  static const std::vector<std::string> pieces = {
+      "--lod",     "--flatten", "--gpu-instancing", "--poses",     "--wind", "--instance-buffer",
+      "--preview", "--pieces",  "--bark",           "--bark-edges"};
   static const std::vector<std::string> binary = {"--tolerance", "--zstd", "--strip",
                                                   "--rmb-version", "--mesh-paths"};
   return target == "pieces" ? pieces : target == "binary" ? binary : mesh;
@@ -145,6 +145,8 @@ int run_build(const BuildArgs& a, const GlobalOptions& global) {
   if (a.target == "pieces") {
     PiecesBuildArgs p = a.pieces;
     p.lod = a.lod;
+    p.bark = a.bark;
+    p.bark_edges = a.bark_edges;
     return build_pieces(a.grow, p, a.output, global.quiet);
   }
   if (extension(a.output) == ".rmb") throw UserError("an .rmb output needs --target binary");
@@ -231,7 +233,8 @@ void add_build(CLI::App& app, const GlobalOptions& global, std::function<int()>&
       ->check(CLI::IsMember({"draco", "meshopt"}));
   sub->add_option("--bark", args->bark,
                   "the bark's tile set atlas (.png from `ramus tiles`; default the bundled "
-                  "procedural bark): base colour and a normal map from it, see docs/textures.md")
+                  "procedural bark): base colour and a normal map from it (--target pieces: "
+                  "a tile per quad), see docs/textures.md")
       ->check(CLI::ExistingFile);
   sub->add_option("--bark-edges", args->bark_edges,
                   "edge colours K of the --bark atlas (1, 2 or 4; default 2)")

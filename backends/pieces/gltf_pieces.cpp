@@ -14,59 +14,22 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <span>
 #include <sstream>
 
 #include "backends/mesh/gltf_buffer_builder.h"
+#include "backends/mesh/leaf_shape.h"
 #include "mesh/tangents.h"
 #include "mesh/up_axis.h"
+#include "backends/pieces/bark_tiles.h"
+#include "backends/pieces/foliage.h"
+#include "backends/pieces/skin_vertex.h"
 #include "backends/texture/bark_maps.h"
 
 namespace ramus::pieces {
 namespace {
 
 using tinygltf::Value;
-
-// One vertex's skin binding as glTF wants it: no joint twice among the non-zero weights,
-// unused slots joint 0 with weight 0, float weights summing to one.
-struct SkinVertex {
-  std::array<std::uint32_t, 4> joints{0, 0, 0, 0};
-  std::array<float, 4> weights{0, 0, 0, 0};
-};
-
-SkinVertex normalize_skin(const std::array<std::uint16_t, 4>& joints,
-                          const std::array<float, 4>& weights, std::uint32_t offset) {
-  SkinVertex v;
-  int used = 0;
-  for (int s = 0; s < 4; ++s) {
-    if (!(weights[s] > 0)) continue;
-    const std::uint32_t j = offset + joints[s];
-    int at = 0;
-    while (at < used && v.joints[at] != j) ++at;
-    if (at == used) {
-      v.joints[used] = j;
-      v.weights[used++] = weights[s];
-    } else {
-      v.weights[at] += weights[s];
-    }
-  }
-  if (used == 0) {  // an unbound vertex follows the piece's root joint
-    v.joints[0] = offset;
-    v.weights[0] = 1;
-    return v;
-  }
-  double sum = 0;
-  for (int s = 0; s < used; ++s) sum += v.weights[s];
-  int biggest = 0;
-  for (int s = 0; s < used; ++s) {
-    v.weights[s] = float(v.weights[s] / sum);
-    if (v.weights[s] > v.weights[biggest]) biggest = s;
-  }
-  float rest = 0;
-  for (int s = 0; s < used; ++s)
-    if (s != biggest) rest += v.weights[s];
-  v.weights[biggest] = 1.0f - rest;
-  return v;
-}
 
 std::string node_safe(const std::string& s) {
   std::string out;
@@ -86,6 +49,10 @@ std::array<float, 4> unit_quat(const Quat& q) {
 }
 
 Vec3 y_up(const Vec3& v) { return mesh::z_up_to_y_up(v); }
+
+const texture::TileAtlas& atlas_of(const PiecesGltfOptions& o) {
+  return o.bark ? *o.bark : texture::bundled_bark_atlas();
+}
 
 class Builder : public mesh::GltfBufferBuilder {
  public:
@@ -123,17 +90,34 @@ class Builder : public mesh::GltfBufferBuilder {
     return floats(f, 16, TINYGLTF_TYPE_MAT4, 0, false);
   }
 
-  int material() {
+  // The bark: the tile set's padded atlas (docs/textures.md), one tile per quad.
+  int material(const PiecesGltfOptions& o) {
     tinygltf::Material m;
     m.name = "bark";
-    // The bundled tile set's bark (docs/textures.md), repeating over the pieces' UVs.
-    const texture::BarkTextures& bark = texture::bundled_bark_textures();
+    const texture::BarkTextures bark =
+        o.bark ? texture::bark_atlas_textures(*o.bark) : texture::bundled_bark_atlas_textures();
     m.pbrMetallicRoughness.baseColorTexture.index =
-        add_texture(bark.base, "bark", TINYGLTF_TEXTURE_WRAP_REPEAT, bark.mime);
+        add_texture(bark.base, "bark", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE, bark.mime);
     m.normalTexture.index =
-        add_texture(bark.normal, "bark_normal", TINYGLTF_TEXTURE_WRAP_REPEAT, bark.mime);
+        add_texture(bark.normal, "bark_normal", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE, bark.mime);
     m.pbrMetallicRoughness.metallicFactor = 0.0;
     m.pbrMetallicRoughness.roughnessFactor = 0.9;
+    model_.materials.push_back(m);
+    return int(model_.materials.size() - 1);
+  }
+
+  // The leaves: the mesh builds' leaf picture, alpha-tested; the cards are one-faced, so the
+  // material is double-sided.
+  int leaf_material() {
+    tinygltf::Material m;
+    m.name = "leaf";
+    m.pbrMetallicRoughness.baseColorTexture.index =
+        add_texture(mesh::leaf_texture_png(512, 1024), "leaf", TINYGLTF_TEXTURE_WRAP_CLAMP_TO_EDGE);
+    m.pbrMetallicRoughness.metallicFactor = 0.0;
+    m.pbrMetallicRoughness.roughnessFactor = 0.8;
+    m.alphaMode = "MASK";
+    m.alphaCutoff = 0.5;
+    m.doubleSided = true;
     model_.materials.push_back(m);
     return int(model_.materials.size() - 1);
   }
@@ -146,10 +130,11 @@ Value int_array(const std::vector<std::uint16_t>& v, std::size_t first, std::siz
   return Value(std::move(a));
 }
 
-// Triangles of a quad mesh: quad q becomes triangles 2q (a b c) and 2q + 1 (a c d).
+// Triangles of the quads written corner by corner from `base` (quad q's corners are vertices
+// base + 4q .. base + 4q + 3): quad q becomes triangles 2q (a b c) and 2q + 1 (a c d).
 void append_triangles(const PieceMesh& mesh, std::uint32_t base, std::vector<std::uint32_t>& out) {
-  for (const auto& q : mesh.quads) {
-    for (int k : {0, 1, 2, 0, 2, 3}) out.push_back(base + q[k]);
+  for (std::uint32_t q = 0; q < mesh.quads.size(); ++q) {
+    for (int k : {0, 1, 2, 0, 2, 3}) out.push_back(base + 4 * q + std::uint32_t(k));
   }
 }
 
@@ -176,8 +161,6 @@ struct SkinnedVertices {
     for (int c = 0; c < 3; ++c) pos.push_back(float(p[c]));
     const Vec3 n = y_up(normalized(normal));
     for (int c = 0; c < 3; ++c) nrm.push_back(float(n[c]));
-    uv.push_back(m.uvs.at(v)[0]);
-    uv.push_back(m.uvs.at(v)[1]);
     const SkinVertex s = normalize_skin(m.joints.at(v), m.weights.at(v), bone_offset);
     jts.insert(jts.end(), s.joints.begin(), s.joints.end());
     wts.insert(wts.end(), s.weights.begin(), s.weights.end());
@@ -207,15 +190,18 @@ struct SkinnedVertices {
   }
 };
 
-// A piece type's mesh in piece space; `skinned` adds JOINTS_0/WEIGHTS_0 (piece-local joints),
-// otherwise the same binding goes into the custom _JOINTS_0/_WEIGHTS_0 for instancing shaders.
+// A piece type's mesh in piece space, its bark showing `tiles`; `skinned` adds JOINTS_0/WEIGHTS_0
+// (piece-local joints), otherwise the same binding goes into the custom _JOINTS_0/_WEIGHTS_0 for
+// instancing shaders. Every quad has its own four corners (the tiles differ from quad to quad).
 int add_piece_mesh(Builder& b, const PieceSet& set, std::uint32_t type, std::size_t lod,
-                   int material, bool skinned) {
+                   int material, bool skinned, std::span<const std::uint16_t> tiles,
+                   const texture::TileAtlas& atlas) {
   const PieceMesh& m = lod_mesh(set, type, lod);
   SkinnedVertices sv;
-  for (std::size_t v = 0; v < m.positions.size(); ++v) {
-    sv.add(m, v, m.positions[v], m.normals.at(v), 0);
+  for (const auto& q : m.quads) {
+    for (std::uint32_t v : q) sv.add(m, v, m.positions[v], m.normals.at(v), 0);
   }
+  sv.uv = bark_uvs(m, tiles, atlas);
   append_triangles(m, 0, sv.idx);
   const bool wide = set.types[type].joints.size() > 255;
   const tinygltf::Primitive prim = sv.primitive(b, material, wide, skinned);
@@ -313,6 +299,97 @@ void add_wind(Builder& b, const Forest& forest, const PiecesLayout& layout,
   if (!anim.channels.empty()) b.model().animations.push_back(std::move(anim));
 }
 
+// The bark tiles of every tree (bark_tiles.h), seeded per tree.
+std::vector<BarkTiling> forest_bark(const PieceSet& set, const Forest& forest,
+                                    const PiecesGltfOptions& o) {
+  std::vector<BarkTiling> out;
+  for (std::size_t k = 0; k < forest.trees.size(); ++k) {
+    out.push_back(bark_tiling(set, forest.trees[k], atlas_of(o).edges, o.seed + k));
+  }
+  return out;
+}
+
+Value json_vec3(const Vec3& v) { return Value(Value::Array{Value(v.x), Value(v.y), Value(v.z)}); }
+
+// The leaf cards of every tree's foliage clouds (foliage.h) as one primitive: skinned to the
+// clouds' bones (a skin of those bone nodes), or fixed in the world when there are no bone
+// nodes (gpu-instancing). Returns the node, or -1 when no tree has an open leaf rim; `clouds`
+// gets each cloud's centre and radius (glTF's y-up world) for the foliage extras.
+int add_leaves(Builder& b, const PieceSet& set, const Forest& forest, const PiecesLayout& layout,
+               const PiecesGltfOptions& o, bool skinned, Value::Array& clouds) {
+  const std::vector<FoliageCloud> all = forest_clouds(set, forest, layout);
+  if (all.empty()) return -1;
+  for (const FoliageCloud& c : all) {
+    Value::Object cloud;
+    cloud["centre"] = json_vec3(y_up(c.centre));
+    cloud["radius"] = Value(c.radius);
+    clouds.emplace_back(std::move(cloud));
+  }
+  const LeafCards cards = leaf_cards(all, o.seed);
+  std::map<std::uint32_t, std::uint32_t> joint_of;  // global bone -> skin joint
+  for (std::uint32_t bone : cards.bones) joint_of.try_emplace(bone, 0);
+  std::vector<std::uint32_t> joint_bones;
+  for (auto& [bone, j] : joint_of) {
+    j = std::uint32_t(joint_bones.size());
+    joint_bones.push_back(bone);
+  }
+  std::vector<float> pos, nrm, uv, wts;
+  std::vector<std::uint32_t> jts;
+  for (std::size_t v = 0; v < cards.positions.size(); ++v) {
+    const Vec3 p = y_up(cards.positions[v]), n = y_up(cards.normals[v]);
+    pos.insert(pos.end(), {float(p.x), float(p.y), float(p.z)});
+    nrm.insert(nrm.end(), {float(n.x), float(n.y), float(n.z)});
+    uv.insert(uv.end(), cards.uvs[v].begin(), cards.uvs[v].end());
+    jts.insert(jts.end(), {joint_of[cards.bones[v]], 0, 0, 0});
+    wts.insert(wts.end(), {1, 0, 0, 0});
+  }
+  tinygltf::Primitive prim;
+  prim.mode = TINYGLTF_MODE_TRIANGLES;
+  prim.material = b.leaf_material();
+  prim.attributes["POSITION"] =
+      b.floats(pos, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  prim.attributes["NORMAL"] =
+      b.floats(nrm, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  prim.attributes["TEXCOORD_0"] =
+      b.floats(uv, 2, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  if (skinned) {
+    prim.attributes["JOINTS_0"] = b.joints(jts, joint_bones.size() > 255);
+    prim.attributes["WEIGHTS_0"] =
+        b.floats(wts, 4, TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER, false);
+  }
+  prim.indices = b.add_indices(cards.indices, std::uint32_t(cards.positions.size()));
+  auto& model = b.model();
+  tinygltf::Mesh mesh;
+  mesh.name = o.name + "_leaves";
+  mesh.primitives.push_back(prim);
+  model.meshes.push_back(std::move(mesh));
+  tinygltf::Node n;
+  n.name = o.name + "_leaves";
+  n.mesh = int(model.meshes.size() - 1);
+  if (skinned) {
+    tinygltf::Skin skin;
+    skin.name = o.name + "_leaves";
+    std::vector<Mat4> ibm;
+    for (std::uint32_t g : joint_bones) {
+      skin.joints.push_back(int(1 + g));
+      ibm.push_back(layout.bone_world[g].inverse().matrix());
+    }
+    skin.inverseBindMatrices = b.matrices(ibm);
+    model.skins.push_back(skin);
+    n.skin = int(model.skins.size() - 1);
+  }
+  model.nodes.push_back(n);
+  return int(model.nodes.size() - 1);
+}
+
+// {"ramus_foliage": {"clouds": [...]}} (docs/textures.md), the extras of the scene's first node.
+Value foliage_extras(Value::Array clouds) {
+  Value::Object foliage, extras;
+  foliage["clouds"] = Value(std::move(clouds));
+  extras["ramus_foliage"] = Value(std::move(foliage));
+  return Value(std::move(extras));
+}
+
 Value scene_extras(const PieceSet& set, const Forest& forest, const PiecesLayout& layout,
                    const char* encoding) {
   Value::Object e;
@@ -326,11 +403,11 @@ Value scene_extras(const PieceSet& set, const Forest& forest, const PiecesLayout
 
 void build_canonical(Builder& b, const PieceSet& set, const Forest& forest,
                      const PiecesLayout& layout, const PiecesGltfOptions& o) {
-  const int material = b.material();
-  std::vector<int> mesh_of(set.types.size(), -1), ibm_of(set.types.size(), -1);
+  const int material = b.material(o);
+  const std::vector<BarkTiling> bark = forest_bark(set, forest, o);
+  std::vector<int> ibm_of(set.types.size(), -1);
   for (std::uint32_t t = 0; t < set.types.size(); ++t) {
     if (layout.type_ranges[t].count == 0) continue;
-    mesh_of[t] = add_piece_mesh(b, set, t, o.lod, material, true);
     std::vector<Mat4> ibm;
     for (const Joint& j : set.types[t].joints) ibm.push_back(j.inverse_bind);
     ibm_of[t] = b.matrices(ibm);
@@ -340,8 +417,25 @@ void build_canonical(Builder& b, const PieceSet& set, const Forest& forest,
   tinygltf::Scene scene;
   scene.name = o.name;
   scene.nodes.push_back(0);
+  // A mesh per piece type and tile choice: the instances' meshes share every accessor but the
+  // texture coordinates (one skin per instance either way).
+  std::vector<int> first_mesh(set.types.size(), -1);
+  std::map<std::pair<std::uint32_t, std::vector<std::uint16_t>>, int> mesh_of;
   for (const OutputInstance& inst : layout.instances) {
     const PieceType& type = set.types[inst.type];
+    const std::vector<std::uint16_t>& tiles = bark[inst.tree].tiles[inst.piece];
+    auto [it, fresh] = mesh_of.try_emplace({inst.type, tiles}, -1);
+    if (fresh && first_mesh[inst.type] < 0) {
+      it->second = first_mesh[inst.type] =
+          add_piece_mesh(b, set, inst.type, o.lod, material, true, tiles, atlas_of(o));
+    } else if (fresh) {
+      tinygltf::Mesh copy = model.meshes[first_mesh[inst.type]];
+      copy.primitives[0].attributes["TEXCOORD_0"] =
+          b.floats(bark_uvs(lod_mesh(set, inst.type, o.lod), tiles, atlas_of(o)), 2,
+                   TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+      model.meshes.push_back(std::move(copy));
+      it->second = int(model.meshes.size() - 1);
+    }
     tinygltf::Skin skin;
     skin.name = "t" + std::to_string(inst.tree) + "_p" + std::to_string(inst.piece);
     skin.inverseBindMatrices = ibm_of[inst.type];
@@ -351,7 +445,7 @@ void build_canonical(Builder& b, const PieceSet& set, const Forest& forest,
     model.skins.push_back(skin);
     tinygltf::Node n;
     n.name = skin.name + "_" + node_safe(type.name);
-    n.mesh = mesh_of[inst.type];
+    n.mesh = it->second;
     n.skin = int(model.skins.size() - 1);
     Value::Object extras;
     extras["tree"] = Value(int(inst.tree));
@@ -359,9 +453,16 @@ void build_canonical(Builder& b, const PieceSet& set, const Forest& forest,
     extras["pieceType"] = Value(type.name);
     extras["boneOffset"] = Value(int(inst.bone_offset));
     extras["tiles"] = int_array(layout.tiles, inst.tile_offset, inst.tile_count);
+    extras["barkTiles"] = int_array(tiles, 0, tiles.size());
     n.extras = Value(std::move(extras));
     model.nodes.push_back(n);
     scene.nodes.push_back(int(model.nodes.size() - 1));
+  }
+  Value::Array clouds;
+  const int leaves = add_leaves(b, set, forest, layout, o, true, clouds);
+  if (leaves >= 0) {
+    scene.nodes.push_back(leaves);
+    model.nodes[0].extras = foliage_extras(std::move(clouds));
   }
   if (o.wind) add_wind(b, forest, layout, o);
   scene.extras = scene_extras(set, forest, layout, "canonical");
@@ -376,7 +477,7 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
                       std::to_string(layout.bone_count()) + " bones (use fewer trees or " +
                       "the canonical encoding)");
   }
-  const int material = b.material();
+  const int material = b.material(o);
   // The bind pose of the merged mesh is the written pose: vertices are the skinned positions,
   // each bone's inverse bind matrix the inverse of its world transform.
   std::vector<Mat4> world(layout.bone_count()), ibm(layout.bone_count());
@@ -384,6 +485,7 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
     world[g] = layout.bone_world[g].matrix();
     ibm[g] = layout.bone_world[g].inverse().matrix();
   }
+  const std::vector<BarkTiling> bark = forest_bark(set, forest, o);
   SkinnedVertices sv;
   Value::Array pieces;
   std::size_t first_quad = 0;
@@ -394,9 +496,12 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
                                            tree.bones.size());
     const SkinnedPiece sp = skin_piece(set, tree, tree_world, inst.piece, o.lod);
     const std::uint32_t base = sv.size();
-    for (std::size_t v = 0; v < m.positions.size(); ++v) {
-      sv.add(m, v, sp.positions[v], sp.normals[v], inst.bone_offset);
+    for (const auto& q : m.quads) {
+      for (std::uint32_t v : q) sv.add(m, v, sp.positions[v], sp.normals[v], inst.bone_offset);
     }
+    const std::vector<std::uint16_t>& tiles = bark[inst.tree].tiles[inst.piece];
+    const std::vector<float> uv = bark_uvs(m, tiles, atlas_of(o));
+    sv.uv.insert(sv.uv.end(), uv.begin(), uv.end());
     append_triangles(m, base, sv.idx);
     Value::Object p;
     p["tree"] = Value(int(inst.tree));
@@ -406,6 +511,7 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
     p["firstQuad"] = Value(int(first_quad));
     p["quads"] = Value(int(m.quads.size()));
     p["tiles"] = int_array(layout.tiles, inst.tile_offset, inst.tile_count);
+    p["barkTiles"] = int_array(tiles, 0, tiles.size());
     pieces.emplace_back(std::move(p));
     first_quad += m.quads.size();
   }
@@ -434,6 +540,12 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
   tinygltf::Scene scene;
   scene.name = o.name;
   scene.nodes = {0, int(model.nodes.size() - 1)};
+  Value::Array clouds;
+  const int leaves = add_leaves(b, set, forest, layout, o, true, clouds);
+  if (leaves >= 0) {
+    scene.nodes.push_back(leaves);
+    model.nodes[0].extras = foliage_extras(std::move(clouds));
+  }
   if (o.wind) add_wind(b, forest, layout, o);
   scene.extras = scene_extras(set, forest, layout, "flatten");
   model.scenes.push_back(scene);
@@ -442,15 +554,26 @@ void build_flattened(Builder& b, const PieceSet& set, const Forest& forest,
 
 void build_instanced(Builder& b, const PieceSet& set, const Forest& forest,
                      const PiecesLayout& layout, const PiecesGltfOptions& o) {
-  const int material = b.material();
+  const int material = b.material(o);
   auto& model = b.model();
   model.extensionsUsed.push_back("EXT_mesh_gpu_instancing");
   tinygltf::Scene scene;
   scene.name = o.name;
+  // Without skins the leaves stand still in the written pose; they come first, carrying the
+  // foliage extras.
+  Value::Array clouds;
+  const int leaves = add_leaves(b, set, forest, layout, o, false, clouds);
+  if (leaves >= 0) {
+    scene.nodes.push_back(leaves);
+    model.nodes[leaves].extras = foliage_extras(std::move(clouds));
+  }
   for (std::uint32_t t = 0; t < set.types.size(); ++t) {
     const TypeRange r = layout.type_ranges[t];
     if (r.count == 0) continue;
-    const int mesh = add_piece_mesh(b, set, t, o.lod, material, false);
+    // Every instance draws one mesh: all quads show tile 0, whose four edges share colour 0, so
+    // it joins itself; an engine's shader reads the per-quad tiles from the tile table.
+    const std::vector<std::uint16_t> tile0(set.types[t].lods[0].quads.size(), 0);
+    const int mesh = add_piece_mesh(b, set, t, o.lod, material, false, tile0, atlas_of(o));
     std::vector<float> tr, rot, scl, bone_offset, tile;
     std::vector<std::uint16_t> table;
     for (std::uint32_t i = r.first; i < r.first + r.count; ++i) {

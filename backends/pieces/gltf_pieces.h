@@ -12,11 +12,13 @@
 // An optional wind clip (canonical and flatten) becomes a looping glTF animation of the bones.
 #pragma once
 
+#include <memory>
 #include <string>
 
 #include "backends/mesh/gltf_container.h"
 #include "backends/pieces/output_layout.h"
 #include "backends/pieces/pieces.h"
+#include "backends/texture/tile_atlas.h"
 
 namespace ramus::pieces {
 
@@ -28,6 +30,9 @@ struct PiecesGltfOptions {
   bool wind = false;    // add the wind clip of every tree (WindOptions seeded per tree)
   WindOptions wind_options;
   std::string name = "pieces";  // the scene and the root node
+  std::uint64_t seed = 1;       // the bark tiles (bark_tiles.h) and the leaf cards (foliage.h)
+  // The bark's tile set as a padded atlas (texture/bark_maps.h bark_atlas); null: the bundled set.
+  std::shared_ptr<const texture::TileAtlas> bark;
 };
 
 using PiecesGltfBytes = mesh::GltfBytes;  // a GLB, or a .gltf's JSON and its .bin

@@ -9,8 +9,10 @@
 
 namespace ramus::pieces {
 
-// Bark only (pieces carry no leaves); quads split into two triangles each. `lod` indexes
-// PieceType::lods. Throws PiecesError for an unknown LOD.
-mesh::TreeMesh posed_forest_mesh(const PieceSet& set, const Forest& forest, std::size_t lod = 0);
+// The bark, quads split into two triangles each, and the leaf cards of the foliage clouds
+// (foliage.h, from `leaf_seed` as in the glTF files; each card with its own back face). `lod`
+// indexes PieceType::lods. Throws PiecesError for an unknown LOD.
+mesh::TreeMesh posed_forest_mesh(const PieceSet& set, const Forest& forest, std::size_t lod = 0,
+                                 std::uint64_t leaf_seed = 1);
 
 }  // namespace ramus::pieces

@@ -65,8 +65,9 @@ Image normal_map(const Image& picture, double strength) {
   return out;
 }
 
-BarkTextures bark_textures(const TileSet& set, std::uint64_t seed) {
-  const Image base = wang_tiling(set, 4, seed);
+namespace {
+
+BarkTextures textures_of(const Image& base) {
   // Bark furrows are deep next to the plates: slopes of a few luminance steps per pixel.
   Image grey(base.width, base.height);
   for (std::size_t i = 0; i < base.rgb.size(); i += 3) {
@@ -75,6 +76,31 @@ BarkTextures bark_textures(const TileSet& set, std::uint64_t seed) {
     grey.rgb[i] = grey.rgb[i + 1] = grey.rgb[i + 2] = y;
   }
   return {encode_jpeg(base, 90), encode_jpeg(normal_map(base, 6.0), 90), encode_jpeg(grey, 90)};
+}
+
+}  // namespace
+
+BarkTextures bark_textures(const TileSet& set, std::uint64_t seed) {
+  return textures_of(wang_tiling(set, 4, seed));
+}
+
+TileAtlas bark_atlas(const TileSet& set) { return padded_atlas(set, std::max(2, set.tile / 32)); }
+
+// The normal map's Sobel reads one pixel across a cell border only in the gutters.
+BarkTextures bark_atlas_textures(const TileAtlas& atlas) { return textures_of(atlas.image); }
+
+const TileAtlas& bundled_bark_atlas() {
+  static std::once_flag once;
+  static TileAtlas atlas;
+  std::call_once(once, [] { atlas = bark_atlas(bundled_tile_set()); });
+  return atlas;
+}
+
+const BarkTextures& bundled_bark_atlas_textures() {
+  static std::once_flag once;
+  static BarkTextures textures;
+  std::call_once(once, [] { textures = bark_atlas_textures(bundled_bark_atlas()); });
+  return textures;
 }
 
 const BarkTextures& bundled_bark_textures() {

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "backends/texture/image.h"
+#include "backends/texture/tile_atlas.h"
 #include "backends/texture/tile_set.h"
 
 namespace ramus::texture {
@@ -35,5 +36,13 @@ struct BarkTextures {
 BarkTextures bark_textures(const TileSet& set, std::uint64_t seed = 1);
 // The textures of the bundled tile set (computed once per process).
 const BarkTextures& bundled_bark_textures();
+
+// Per-quad tiles (the pieces, Burkus 5.1): the set's padded atlas (tile_atlas.h, 8-pixel gutters
+// per 256 pixels of tile) and its textures, base colour and normal map of the atlas itself.
+TileAtlas bark_atlas(const TileSet& set);
+BarkTextures bark_atlas_textures(const TileAtlas& atlas);
+// The bundled set's (computed once per process).
+const TileAtlas& bundled_bark_atlas();
+const BarkTextures& bundled_bark_atlas_textures();
 
 }  // namespace ramus::texture

@@ -24,9 +24,11 @@ TEST_CASE("mesh and pieces glTFs wear textured bark and alpha-tested leaves",
   CHECK(results[0].at("texturedMaterials") == 2);
   CHECK(results[0].at("normalMappedMaterials") == 1);
   CHECK(results[0].at("alphaTestedPrimitives") == 1);
-  // The pieces: every piece mesh shares the one normal-mapped bark material.
-  CHECK(results[1].at("texturedMaterials") == 1);
+  // The pieces: every piece mesh shares the one normal-mapped bark material (its tiles chosen
+  // per quad), and the leaves at the branch tips are one alpha-tested primitive.
+  CHECK(results[1].at("texturedMaterials") == 2);
   CHECK(results[1].at("normalMappedMaterials") == 1);
+  CHECK(results[1].at("alphaTestedPrimitives") == 1);
 }
 
 TEST_CASE("ramus tiles writes an atlas that ramus build --bark takes", "[assets][textures]") {
@@ -43,13 +45,22 @@ TEST_CASE("ramus tiles writes an atlas that ramus build --bark takes", "[assets]
   const fs::path tree = dir.path / "tree.glb";
   ramus_ok({"build", example("trees/broadleaf.ramus"), "--lod", "1", "--bark", four.string(),
             "--bark-edges", "4", "-o", tree.string()});
+  // The pieces take it too, one tile per quad.
+  const fs::path pieces = dir.path / "pieces.glb";
+  ramus_ok({"build", example("pieces/almond.ramus"), "--target", "pieces", "--bark", four.string(),
+            "--bark-edges", "4", "-o", pieces.string()});
   std::string report;
-  CHECK(validates({tree}, report));
+  CHECK(validates({tree, pieces}, report));
   INFO(report);
   // Not an atlas of 4 edge colours (256 px is 16 tiles of 16 px, below 32), and not a picture.
   cli_test::CliResult r =
       cli_test::run_ramus({"build", example("trees/broadleaf.ramus"), "--bark", atlas.string(),
                            "--bark-edges", "4", "-o", (dir.path / "x.glb").string()});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("--bark") != std::string::npos);
+  r = cli_test::run_ramus({"build", example("pieces/almond.ramus"), "--target", "pieces", "--bark",
+                           atlas.string(), "--bark-edges", "4", "-o",
+                           (dir.path / "x.glb").string()});
   CHECK(r.status == 1);
   CHECK(r.out.find("--bark") != std::string::npos);
   r = cli_test::run_ramus(

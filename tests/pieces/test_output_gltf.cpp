@@ -9,6 +9,7 @@
 #include <set>
 
 #include "mesh/up_axis.h"
+#include "backends/pieces/foliage.h"
 #include "backends/pieces/gltf_pieces.h"
 #include "backends/pieces/output_layout.h"
 #include "backends/pieces/output_posed_mesh.h"
@@ -140,13 +141,40 @@ TEST_CASE("canonical glTF: shared meshes, one skin per piece on its window of bo
   const std::size_t pieces = piece_count(f), bones = bone_count(f);
   std::set<std::uint32_t> used_types;
   for (const auto& inst : layout.instances) used_types.insert(inst.type);
-  // One mesh per piece type in use, one primitive each: the draw calls per skin are one.
-  CHECK(m.meshes.size() == used_types.size());
+  // One mesh per piece type and bark tile choice, one primitive each (the draw calls per skin
+  // are one), plus the leaves with their own skin.
+  std::set<std::pair<int, std::vector<int>>> tile_choices;
+  for (std::size_t i = 0; i < pieces; ++i) {
+    const tinygltf::Value& bt = m.nodes.at(1 + bones + i).extras.Get("barkTiles");
+    std::vector<int> t;
+    for (int q = 0; q < int(bt.ArrayLen()); ++q) t.push_back(bt.Get(q).GetNumberAsInt());
+    tile_choices.insert({m.nodes.at(1 + bones + i).mesh, t});
+  }
+  CHECK(m.meshes.size() == tile_choices.size() + 1);
   for (const auto& mesh : m.meshes) CHECK(mesh.primitives.size() == 1);
-  CHECK(m.skins.size() == pieces);
-  CHECK(m.nodes.size() == 1 + bones + pieces);
-  CHECK(m.scenes.at(0).nodes.size() == 1 + pieces);
-  std::map<int, int> ibm_of_mesh;
+  CHECK(m.skins.size() == pieces + 1);
+  CHECK(m.nodes.size() == 1 + bones + pieces + 1);
+  CHECK(m.scenes.at(0).nodes.size() == 1 + pieces + 1);
+  CHECK(m.nodes.at(1 + bones + pieces).name == "pieces_leaves");
+  // The foliage clouds (one per open leaf rim, foliage.h) in the first node's extras, y up.
+  const tinygltf::Value& clouds = m.nodes.at(0).extras.Get("ramus_foliage").Get("clouds");
+  std::size_t expected_clouds = 0;
+  for (std::size_t k = 0; k < f.trees.size(); ++k) {
+    const Tree& tree = f.trees[k];
+    const std::span<const Trs> tree_world(layout.bone_world.data() + layout.tree_bone_base[k],
+                                          tree.bones.size());
+    for (const FoliageCloud& c : foliage_clouds(set, tree, tree_world)) {
+      REQUIRE(int(expected_clouds) < int(clouds.ArrayLen()));
+      const tinygltf::Value& got = clouds.Get(int(expected_clouds++));
+      const Vec3 want = y_up(c.centre);
+      for (int i = 0; i < 3; ++i)
+        CHECK(got.Get("centre").Get(i).GetNumberAsDouble() == Approx(want[i]).margin(1e-9));
+      CHECK(got.Get("radius").GetNumberAsDouble() == Approx(c.radius));
+    }
+  }
+  CHECK(expected_clouds > 0);
+  CHECK(clouds.ArrayLen() == expected_clouds);
+  std::map<std::uint32_t, int> ibm_of_type;
   const std::vector<Mat4> world = node_worlds(m);
   double worst = 0;
   for (std::size_t i = 0; i < pieces; ++i) {
@@ -164,7 +192,7 @@ TEST_CASE("canonical glTF: shared meshes, one skin per piece on its window of bo
     for (std::size_t j = 0; j < skin.joints.size(); ++j)
       CHECK(skin.joints[j] == int(1 + inst.bone_offset + j));
     // One inverse-bind-matrix accessor per piece type, holding its canonical bind pose.
-    auto [it, fresh] = ibm_of_mesh.try_emplace(n.mesh, skin.inverseBindMatrices);
+    auto [it, fresh] = ibm_of_type.try_emplace(inst.type, skin.inverseBindMatrices);
     CHECK(it->second == skin.inverseBindMatrices);
     for (std::size_t j = 0; j < type.joints.size(); ++j) {
       const Mat4 ibm = read_matrix(m, skin.inverseBindMatrices, j);
@@ -178,11 +206,15 @@ TEST_CASE("canonical glTF: shared meshes, one skin per piece on its window of bo
       CHECK(tiles.Get(int(q)).GetNumberAsInt() == f.trees[inst.tree].pieces[inst.piece].tiles[q]);
     // Skinning with the file's numbers lands where the back end's skinning does.
     const Tree& tree = f.trees[inst.tree];
+    // Every quad is written corner by corner (its tiles differ from its neighbours').
     const SkinnedPiece expect = skin_piece(set, tree, bone_world(tree, tree.pose), inst.piece, 0);
-    for (std::size_t v = 0; v < expect.positions.size(); ++v)
-      worst = std::max(worst, distance(skin_vertex(m, world, n, v), y_up(expect.positions[v])));
+    const PieceMesh& pm = type.lods[0];
+    for (std::size_t q = 0; q < pm.quads.size(); ++q)
+      for (int k = 0; k < 4; ++k)
+        worst = std::max(worst, distance(skin_vertex(m, world, n, 4 * q + k),
+                                         y_up(expect.positions[pm.quads[q][k]])));
   }
-  CHECK(ibm_of_mesh.size() == used_types.size());
+  CHECK(ibm_of_type.size() == used_types.size());
   CHECK(worst < 1e-4 * tree_scale(set));
   CHECK(m.extensionsUsed.empty());
 }
@@ -195,23 +227,33 @@ TEST_CASE("flattened glTF: one mesh, one skin, one draw call, the same posed ver
   o.encoding = GltfEncoding::kFlatten;
   o.lod = 1;
   const tinygltf::Model m = load(encode_pieces_gltf(set, f, o, true).main);
-  REQUIRE(m.meshes.size() == 1);
+  // The pieces' mesh and the leaves', each with its skin.
+  REQUIRE(m.meshes.size() == 2);
   CHECK(m.meshes[0].primitives.size() == 1);
-  REQUIRE(m.skins.size() == 1);
+  REQUIRE(m.skins.size() == 2);
   CHECK(m.skins[0].joints.size() == bone_count(f));
-  const tinygltf::Node& n = m.nodes.back();
+  CHECK(m.nodes.size() == 1 + bone_count(f) + 2);
+  const tinygltf::Node& n = m.nodes.at(1 + bone_count(f));
   CHECK(n.skin == 0);
   CHECK(n.mesh == 0);
-  CHECK(m.nodes.size() == 1 + bone_count(f) + 1);
   CHECK(n.extras.Get("pieces").ArrayLen() == piece_count(f));
   const mesh::TreeMesh posed = posed_forest_mesh(set, f, 1);
   const std::vector<Mat4> world = node_worlds(m);
-  REQUIRE(m.accessors.at(m.meshes[0].primitives[0].attributes.at("POSITION")).count ==
-          posed.bark.positions.size());
+  // Every quad corner by corner: vertex 4q + k of the file is corner k of quad q.
+  std::size_t quads = 0;
+  for (const Tree& t : f.trees)
+    for (const PlacedPiece& p : t.pieces) quads += set.types[p.type].lods[1].quads.size();
+  REQUIRE(m.accessors.at(m.meshes[0].primitives[0].attributes.at("POSITION")).count == 4 * quads);
+  REQUIRE(posed.bark.indices.size() == 6 * quads);
   double worst = 0;
-  for (std::size_t v = 0; v < posed.bark.positions.size(); ++v)
-    worst =
-        std::max(worst, distance(skin_vertex(m, world, n, v), y_up(Vec3(posed.bark.positions[v]))));
+  for (std::size_t q = 0; q < quads; ++q) {
+    for (int k = 0; k < 4; ++k) {
+      // posed_forest_mesh's triangles of quad q: (a b c) (a c d).
+      const std::uint32_t corner = posed.bark.indices[6 * q + (k == 3 ? 5 : std::size_t(k))];
+      worst = std::max(worst, distance(skin_vertex(m, world, n, 4 * q + k),
+                                       y_up(Vec3(posed.bark.positions[corner]))));
+    }
+  }
   CHECK(worst < 1e-4 * tree_scale(set));
 }
 
@@ -227,7 +269,12 @@ TEST_CASE("gpu-instancing glTF: one instanced node per piece type, no skins, not
   CHECK(m.extensionsUsed == std::vector<std::string>{"EXT_mesh_gpu_instancing"});
   CHECK(m.extensionsRequired.empty());
   std::size_t instances = 0;
+  // The leaves come first, without a skin.
+  REQUIRE(m.scenes.at(0).nodes.size() >= 1);
+  CHECK(m.nodes.at(m.scenes[0].nodes[0]).name == "pieces_leaves");
+  CHECK(m.nodes.at(m.scenes[0].nodes[0]).skin == -1);
   for (const tinygltf::Node& n : m.nodes) {
+    if (n.name == "pieces_leaves") continue;
     REQUIRE(n.extensions.count("EXT_mesh_gpu_instancing") == 1);
     const tinygltf::Value& attrs = n.extensions.at("EXT_mesh_gpu_instancing").Get("attributes");
     const std::string type_name = n.extras.Get("pieceType").Get<std::string>();

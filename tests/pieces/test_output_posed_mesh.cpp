@@ -1,6 +1,8 @@
 // The posed mesh the preview draws: every piece skinned with its tree's pose; at every joint the
 // child's root-rim vertices sit on the parent's leaf-rim vertices (no gap shows in the picture),
 // in the rest pose and in random poses, at every level of detail.
+#include "backends/pieces/foliage.h"
+#include "backends/pieces/output_layout.h"
 #include "backends/pieces/output_posed_mesh.h"
 #include "backends/preview/preview.h"
 #include "tests/pieces/output_fixture.h"
@@ -64,6 +66,11 @@ TEST_CASE("the posed pieces preview renders a picture", "[pieces][preview]") {
   const PieceSet set = lower_set();
   const Forest f = forest(set, 4, 2);
   const mesh::TreeMesh m = posed_forest_mesh(set, f, 1);
+  // The leaf cards of the foliage clouds, each with its back face: twice the glTF's triangles.
+  const PiecesLayout layout = layout_forest(set, f);
+  const LeafCards cards = leaf_cards(forest_clouds(set, f, layout), 1);
+  CHECK(cards.indices.size() > 0);
+  CHECK(m.leaves.triangle_count() == 2 * cards.indices.size() / 3);
   preview::PreviewOptions po;
   po.width = 240;
   po.height = 160;
