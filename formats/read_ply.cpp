@@ -413,10 +413,10 @@ class AsciiBody {
 }  // namespace
 
 PointCloud read_ply(std::string_view bytes, const std::string& name, const ReadOptions& options,
-                    ReadReport* report) {
+                    const ReadPass& pass, ReadReport* report) {
   Header h = parse_header(bytes, name);
   const Element& vertex = check_vertex(h, name);
-  CloudBuilder builder(name, options);
+  CloudBuilder builder(name, options, pass);
   enable_channels(vertex, builder);
   if (h.encoding == Encoding::kAscii) {
     AsciiBody(bytes, h, name, builder).read(h);

@@ -6,7 +6,7 @@
 
 namespace ramus {
 
-VoxelThinner::VoxelThinner(double size) : inverse_(1.0 / size) {}
+VoxelThinner::VoxelThinner(double size) : size_(size), inverse_(1.0 / size) {}
 
 std::size_t VoxelThinner::CellHash::operator()(const Cell& c) const {
   return std::size_t(mix64(std::uint64_t(c.x) * 0x9e3779b97f4a7c15ULL ^
@@ -17,7 +17,28 @@ std::size_t VoxelThinner::CellHash::operator()(const Cell& c) const {
 bool VoxelThinner::keep(const Vec3& w) {
   const Cell c{std::int64_t(std::floor(w.x * inverse_)), std::int64_t(std::floor(w.y * inverse_)),
                std::int64_t(std::floor(w.z * inverse_))};
-  return cells_.insert(c).second;
+  const bool added = cells_.insert(c).second;
+  if (added && journal_) added_.push_back(c);
+  return added;
+}
+
+bool VoxelThinner::keep(const Vec3& offset, const Vec3f& position) {
+  return keep(offset + Vec3(position));
+}
+
+void VoxelThinner::mark() {
+  journal_ = true;
+  added_.clear();
+}
+
+void VoxelThinner::undo_since_mark() {
+  for (const Cell& c : added_) cells_.erase(c);
+  added_.clear();
+}
+
+void VoxelThinner::commit() {
+  journal_ = false;
+  added_ = {};
 }
 
 PointCloud thin_cloud(const PointCloud& cloud, double size) {
@@ -27,7 +48,7 @@ PointCloud thin_cloud(const PointCloud& cloud, double size) {
   out.source = cloud.source;
   VoxelThinner thinner(size);
   for (std::size_t i = 0; i < cloud.size(); ++i) {
-    if (!thinner.keep(cloud.world(i))) continue;
+    if (!thinner.keep(cloud.offset, cloud.positions[i])) continue;
     out.positions.push_back(cloud.positions[i]);
     if (!cloud.normals.empty()) out.normals.push_back(cloud.normals[i]);
     if (!cloud.intensity.empty()) out.intensity.push_back(cloud.intensity[i]);
