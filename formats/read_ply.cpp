@@ -323,6 +323,7 @@ class BinaryBody {
       if (b_.count() == before && b_.strict()) {
         fail_at_byte(file_, start, "vertex " + std::to_string(i) + " has a non-finite coordinate");
       }
+      if ((i & 0xffff) == 0xffff) b_.release(pos_);
     }
   }
 
