@@ -1,10 +1,14 @@
 // Voxel thinning while a file is read (ReadOptions::thin) keeps exactly the points that thinning
 // the cloud read whole keeps (thin_cloud), in every format, whether the reader's guess of the
 // offset holds (one pass) or not (two), and with a thinner shared across files (`ramus tile`).
+#include <array>
 #include <catch2/catch.hpp>
+#include <cmath>
 #include <cstring>
+#include <set>
 #include <vector>
 
+#include "core/rng.h"
 #include "format_test_util.h"
 #include "formats/las_file.h"
 #include "formats/point_cloud_io.h"
@@ -175,4 +179,42 @@ TEST_CASE("thinning keeps a channel that is zero in every kept point but not in 
   CHECK(c.intensity == std::vector<float>{0.0f});
   CHECK(c.classification.empty());
   require_same(c, thin_cloud(read_point_cloud_bytes(las, Format::kLas, "i.las"), 1.0));
+}
+
+TEST_CASE("the thinner's cube set: packed near cubes, far cubes, growth and undo", "[thin]") {
+  // Against a std::set of cube indices: cubes near the first (packed in 64 bits), cubes more
+  // than 2^20 cubes away (the fallback set), enough of them to grow the table several times,
+  // and undo_since_mark() (backward-shift deletion) followed by the same and other cubes.
+  Rng rng(7);
+  VoxelThinner thinner(1.0);
+  std::set<std::array<std::int64_t, 3>> reference;
+  auto cube = [&](bool far) {
+    const double reach = far ? 3e6 : 300;
+    return Vec3(std::floor(rng.uniform(-reach, reach)), std::floor(rng.uniform(-reach, reach)),
+                std::floor(rng.uniform(-reach / 10, reach / 10))) +
+           Vec3(0.5, 0.5, 0.5);
+  };
+  auto key = [](const Vec3& p) {
+    return std::array<std::int64_t, 3>{std::int64_t(std::floor(p.x)), std::int64_t(std::floor(p.y)),
+                                       std::int64_t(std::floor(p.z))};
+  };
+  std::vector<Vec3> seen;
+  for (int i = 0; i < 60000; ++i) {
+    const Vec3 p =
+        i % 50 == 0 && !seen.empty() ? seen[std::size_t(i) % seen.size()] : cube(i % 7 == 0);
+    seen.push_back(p);
+    REQUIRE(thinner.keep(p) == reference.insert(key(p)).second);
+  }
+  REQUIRE(thinner.cells() == reference.size());
+  thinner.mark();
+  std::vector<Vec3> later;
+  for (int i = 0; i < 30000; ++i)
+    later.push_back(i % 3 == 0 ? seen[std::size_t(i) * 2] : cube(i % 5 == 0));
+  for (const Vec3& p : later) thinner.keep(p);
+  thinner.undo_since_mark();
+  thinner.commit();
+  CHECK(thinner.cells() == reference.size());
+  for (const Vec3& p : seen) CHECK_FALSE(thinner.keep(p));  // all still there
+  for (const Vec3& p : later) REQUIRE(thinner.keep(p) == reference.insert(key(p)).second);
+  CHECK(thinner.cells() == reference.size());
 }
