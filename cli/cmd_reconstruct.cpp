@@ -21,7 +21,6 @@
 #include "core/skeleton_trees.h"
 #include "formats/point_cloud_io.h"
 #include "formats/tile_manifest.h"
-#include "formats/voxel_thin.h"
 #include "reconstruct/forest/core_trees.h"
 #include "reconstruct/forest/stem_bases.h"
 #include "reconstruct/merge/branch_merge.h"
@@ -69,12 +68,15 @@ ScanInput read_input(const ReconstructArgs& a) {
     } else if (a.tile >= 0) {
       throw UserError("--tile applies to a tile manifest (DIR/manifest.json from `ramus tile`)");
     }
-    in.cloud = read_point_cloud(path);
+    // Thinned while it is read: memory holds the thinned cloud, not the file's (docs/scale.md).
+    ReadOptions options;
+    options.thin = a.thin;
+    ReadReport report;
+    in.cloud = read_point_cloud(path, options, &report);
+    in.read_points = report.points_before_thinning;
   } catch (const FormatError& e) {
     throw UserError(e.what());
   }
-  in.read_points = in.cloud.size();
-  if (a.thin > 0) in.cloud = thin_cloud(in.cloud, a.thin);
   return in;
 }
 
@@ -227,7 +229,7 @@ void add_reconstruct(CLI::App& app, const GlobalOptions& global, std::function<i
                   "core")
       ->check(CLI::NonNegativeNumber);
   sub->add_option("--thin", args->thin,
-                  "keep one point per voxel of this edge (metres) once the scan is read")
+                  "keep the first point of each voxel of this edge (metres) while the scan is read")
       ->check(CLI::PositiveNumber);
   sub->add_option("--bases", args->bases,
                   "tree bases: livny (density near the ground, default) or stems (stems at "

@@ -2,8 +2,8 @@
 // Streams the points of the scans into square tiles of a grid aligned to world coordinate 0:
 // each tile's file (DIR/K.las) holds the points of its core grown by the buffer on every side,
 // and DIR/manifest.json lists the tiles (formats/tile_manifest.h; docs/scale.md). Points go to
-// per-tile spill files in blocks as they are read, so memory holds one scan and one tile at a
-// time, not every tile.
+// per-tile spill files in blocks as they are read, so memory holds one scan (with --thin, its
+// thinned points) and one block per tile, not every tile.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -63,14 +63,18 @@ int run_tile(const TileArgs& a, const GlobalOptions& global) {
   for (const std::string& scan : a.scans) {
     PointCloud cloud;
     try {
-      cloud = read_point_cloud(scan);
+      // Thinned while it is read, against the cubes of the scans before it.
+      ReadOptions options;
+      options.thin = a.thin;
+      options.thinner = thinner.get();
+      ReadReport report;
+      cloud = read_point_cloud(scan, options, &report);
+      read += report.points_before_thinning;
     } catch (const FormatError& e) {
       throw UserError(e.what());
     }
-    read += cloud.size();
     for (std::size_t i = 0; i < cloud.size(); ++i) {
       const Vec3 w = cloud.world(i);
-      if (thinner && !thinner->keep(w)) continue;
       ++kept;
       const CellKey home{cell(w.x), cell(w.y)};
       // Every tile whose buffered box holds the point.
@@ -163,7 +167,7 @@ void add_tile(CLI::App& app, const GlobalOptions& global, std::function<int()>& 
                   "crown, or trees at a border are cut")
       ->check(CLI::NonNegativeNumber);
   sub->add_option("--thin", args->thin,
-                  "keep one point per voxel of this edge (metres) once the scan is read")
+                  "keep the first point of each voxel of this edge (metres) while the scan is read")
       ->check(CLI::PositiveNumber);
   sub->callback(
       [args, &global, &run] { run = [args, &global] { return run_tile(*args, global); }; });

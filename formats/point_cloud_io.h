@@ -19,6 +19,8 @@
 
 namespace ramus {
 
+class VoxelThinner;  // formats/voxel_thin.h
+
 enum class Format { kAuto, kPly, kXyz, kLas, kPcd };
 
 // "ply", "xyz", "las", "pcd" ("auto" for kAuto).
@@ -60,19 +62,35 @@ struct ReadOptions {
   // (organized PCD clouds and some exporters mark missing returns that way). When false, the
   // first such point is a FormatError instead.
   bool skip_non_finite = true;
+  // Voxel thinning while reading (formats/voxel_thin.h): when > 0, only the first point of each
+  // cube of this edge is kept, and the reader holds only the kept points, not the file's. The
+  // result is byte for byte thin_cloud(read without thinning, thin): the cube of a point is
+  // decided on its position relative to the cloud's offset, which comes from the bounding box
+  // of all points, so the reader thins against a guess of the offset (LAS/LAZ: the header's
+  // box) and reads the file a second time when the guess proves wrong (text formats: always
+  // a first pass for the box).
+  double thin = 0;
+  // With thin > 0: a thinner shared by several files (`ramus tile` thins across its scans);
+  // null: one of the read's own. Its size() is used, not `thin`.
+  VoxelThinner* thinner = nullptr;
 };
 
 // What a reader found besides the points, for `ramus inspect` and for callers that want to warn.
 struct ReadReport {
   Format format = Format::kAuto;
-  std::string variant;          // e.g. "binary_little_endian", "LAS 1.4 point format 6"
-  std::size_t points_read = 0;  // points kept in the cloud
-  std::size_t skipped = 0;      // points dropped for non-finite coordinates
+  std::string variant;                     // e.g. "binary_little_endian", "LAS 1.4 point format 6"
+  std::size_t points_read = 0;             // points kept in the cloud
+  std::size_t skipped = 0;                 // points dropped for non-finite coordinates
+  std::size_t points_before_thinning = 0;  // finite points in the file (= points_read unthinned)
+  int passes = 0;                          // times the file was read (2: a thinned read's retry)
 };
 
 // Reads the file at `path`. The format comes from the content's magic bytes when they announce
 // one, else from the extension, else plain text is read as XYZ. An empty file or one without
 // points is a FormatError. LAZ (compressed LAS) is decompressed chunk by chunk (formats/laz/).
+// The file is memory-mapped and the LAS, LAZ and XYZ readers hand back the pages they are done
+// with as they go, so with ReadOptions::thin the resident memory is the thinned cloud plus a
+// window of the file (docs/scale.md, "Bounded memory").
 PointCloud read_point_cloud(const std::string& path, const ReadOptions& options = {},
                             ReadReport* report = nullptr);
 

@@ -32,6 +32,7 @@ enum : std::size_t {
   kLegacyCount = 107,
   kScale = 131,
   kOffset = 155,
+  kMaxX = 179,  // then min x, max y, min y, max z, min z
   kCount64 = 247,
 };
 
@@ -45,6 +46,7 @@ struct LasHeader {
   std::uint64_t count = 0;
   double scale[3] = {1, 1, 1};
   double offset[3] = {0, 0, 0};
+  Vec3 box_lo, box_hi;           // the header's bounding box: only a guess (see read_las)
   bool compressed_bits = false;  // the point format byte's bit 7 or 6 (LAZ)
   std::size_t laszip_vlr = 0;    // payload offset of the "laszip encoded" VLR (0: none)
   std::size_t laszip_vlr_length = 0;
@@ -118,6 +120,8 @@ void parse_point_fields(std::string_view b, const std::string& file, LasHeader& 
     if (!std::isfinite(h.offset[k])) {
       fail_at_byte(file, kOffset + 8 * k, std::string(axis[k]) + " offset is not finite");
     }
+    h.box_hi[k] = load_le<double>(d + kMaxX + 16 * k);
+    h.box_lo[k] = load_le<double>(d + kMaxX + 16 * k + 8);
   }
 }
 
@@ -179,6 +183,7 @@ void read_laz_points(std::string_view b, const std::string& file, const LasHeade
   builder.enable_classification();
   laz::LazInput in{b,       file,     h.laszip_vlr,   h.laszip_vlr_length, h.point_offset,
                    h.count, h.format, h.record_length};
+  in.release = [&builder](std::size_t byte) { builder.release(byte); };
   // Bounded by what the file could plausibly hold; the builder grows past it if need be.
   builder.reserve(h.count, b.size() * 4);
   laz::decode_laz_points(in, [&](const std::uint8_t* recs, std::size_t n, std::uint64_t first) {
@@ -211,13 +216,14 @@ void read_points(std::string_view b, const std::string& file, const LasHeader& h
       fail_at_byte(file, std::size_t(rec - b.data()),
                    "point " + std::to_string(i) + " has a non-finite coordinate");
     }
+    if ((i & 0xffff) == 0xffff) builder.release(std::size_t(rec - b.data()));
   }
 }
 
 }  // namespace
 
 PointCloud read_las(std::string_view bytes, const std::string& name, const ReadOptions& options,
-                    ReadReport* report) {
+                    const ReadPass& pass, ReadReport* report) {
   if (bytes.substr(0, 4) != "LASF") {
     fail_at_byte(name, 0, "expected the LAS signature 'LASF', found " + quoted(bytes.substr(0, 4)));
   }
@@ -231,7 +237,10 @@ PointCloud read_las(std::string_view bytes, const std::string& name, const ReadO
   parse_fixed_fields(bytes, name, h);
   parse_point_fields(bytes, name, h);
   check_vlrs(bytes, name, h);
-  CloudBuilder builder(name, options);
+  CloudBuilder builder(name, options, pass);
+  // A thinned read narrows its points against the offset the header's box gives; when the box
+  // is stale the offset proves different at the end and the file is read again.
+  builder.guess_offset(h.box_lo, h.box_hi);
   const bool laz = h.laszip_vlr != 0;
   if (laz) {
     read_laz_points(bytes, name, h, builder);
@@ -249,15 +258,10 @@ PointCloud read_las(std::string_view bytes, const std::string& name, const ReadO
                                          h.point_offset, h.count, h.format, h.record_length});
   }
   PointCloud cloud = builder.finish(report, Format::kLas, variant);
-  // Every record has intensity and class fields; all zeros means the scanner recorded none.
-  auto all_zero = [](const auto& v) {
-    for (auto x : v) {
-      if (x != 0) return false;
-    }
-    return true;
-  };
-  if (all_zero(cloud.intensity)) cloud.intensity.clear();
-  if (all_zero(cloud.classification)) cloud.classification.clear();
+  // Every record has intensity and class fields; all zeros (over every point read, thinned away
+  // or not) means the scanner recorded none.
+  if (!builder.any_intensity()) cloud.intensity.clear();
+  if (!builder.any_classification()) cloud.classification.clear();
   return cloud;
 }
 

@@ -303,14 +303,14 @@ void read_ascii(std::string_view bytes, const std::string& file, const PcdHeader
 }  // namespace
 
 PointCloud read_pcd(std::string_view bytes, const std::string& name, const ReadOptions& options,
-                    ReadReport* report) {
+                    const ReadPass& pass, ReadReport* report) {
   PcdHeader h = HeaderParser(bytes, name).parse();
   if (h.data == "binary_compressed") {
     fail_at_line(name, h.data_line - 1,
                  "DATA binary_compressed (LZF) is not supported; save the "
                  "cloud as 'binary' or 'ascii' (e.g. pcl_convert_pcd_ascii_binary)");
   }
-  CloudBuilder builder(name, options);
+  CloudBuilder builder(name, options, pass);
   enable_channels(h, builder);
   if (h.data == "ascii") {
     read_ascii(bytes, name, h, builder);

@@ -323,6 +323,7 @@ class BinaryBody {
       if (b_.count() == before && b_.strict()) {
         fail_at_byte(file_, start, "vertex " + std::to_string(i) + " has a non-finite coordinate");
       }
+      if ((i & 0xffff) == 0xffff) b_.release(pos_);
     }
   }
 
@@ -413,10 +414,10 @@ class AsciiBody {
 }  // namespace
 
 PointCloud read_ply(std::string_view bytes, const std::string& name, const ReadOptions& options,
-                    ReadReport* report) {
+                    const ReadPass& pass, ReadReport* report) {
   Header h = parse_header(bytes, name);
   const Element& vertex = check_vertex(h, name);
-  CloudBuilder builder(name, options);
+  CloudBuilder builder(name, options, pass);
   enable_channels(vertex, builder);
   if (h.encoding == Encoding::kAscii) {
     AsciiBody(bytes, h, name, builder).read(h);

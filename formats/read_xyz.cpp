@@ -90,8 +90,9 @@ const char* column_label(const Columns& c, int col) {
 
 class XyzReader {
  public:
-  XyzReader(std::string_view bytes, const std::string& name, const ReadOptions& options)
-      : bytes_(bytes), name_(name), builder_(name, options) {}
+  XyzReader(std::string_view bytes, const std::string& name, const ReadOptions& options,
+            const ReadPass& pass)
+      : bytes_(bytes), name_(name), builder_(name, options, pass) {}
 
   PointCloud read(ReadReport* report);
 
@@ -135,6 +136,8 @@ PointCloud XyzReader::read(ReadReport* report) {
       continue;
     }
     data_line(line);
+    // (Offsets count from after a byte order mark: 3 bytes fewer released, never more.)
+    if ((lines_.line_number() & 0xffff) == 0) builder_.release(lines_.offset());
   }
   std::string variant = separators_ == ";"   ? "semicolon-separated"
                         : separators_ == "," ? "comma-separated"
@@ -212,10 +215,10 @@ void XyzReader::data_line(std::string_view line) {
 }  // namespace
 
 PointCloud read_xyz(std::string_view bytes, const std::string& name, const ReadOptions& options,
-                    ReadReport* report) {
+                    const ReadPass& pass, ReadReport* report) {
   // A UTF-8 byte order mark (spreadsheet exports) would otherwise make line 1 look like a header.
   if (bytes.substr(0, 3) == "\xEF\xBB\xBF") bytes.remove_prefix(3);
-  XyzReader reader(bytes, name, options);
+  XyzReader reader(bytes, name, options, pass);
   return reader.read(report);
 }
 

@@ -7,6 +7,8 @@
 #include <cstdlib>
 #include <limits>
 
+#include "formats/voxel_thin.h"
+
 namespace ramus {
 
 static std::string position_text(std::size_t line, std::size_t column, std::size_t byte) {
@@ -136,10 +138,18 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
-CloudBuilder::CloudBuilder(std::string name, const ReadOptions& options)
-    : name_(std::move(name)), options_(options) {}
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+CloudBuilder::CloudBuilder(std::string name, const ReadOptions& options, const ReadPass& pass)
+    : name_(std::move(name)),
+      options_(options),
+      pass_(pass),
+      assumed_(pass.offset),
+      lo_{kInf, kInf, kInf},
+      hi_{-kInf, -kInf, -kInf} {}
 
 void CloudBuilder::reserve(std::uint64_t n, std::uint64_t cap) {
+  if (pass_.thinner) return;  // the kept points are not known in advance
   std::size_t r = std::size_t(std::min(n, cap));
   points_.reserve(r);
   if (has_normals_) normals_.reserve(r);
@@ -147,6 +157,20 @@ void CloudBuilder::reserve(std::uint64_t n, std::uint64_t cap) {
   if (has_classification_) classification_.reserve(r);
 }
 
+// The offset finish() gives a cloud with this bounding box: its centre rounded to a whole unit,
+// so the offset prints nicely and every float position is a small number near zero (best
+// resolution for UTM-scale data).
+static Vec3 offset_of_box(const Vec3& lo, const Vec3& hi) {
+  Vec3 o;
+  for (int k = 0; k < 3; ++k) o[k] = std::round(lo[k] * 0.5 + hi[k] * 0.5);
+  return o;
+}
+
+void CloudBuilder::guess_offset(const Vec3& lo, const Vec3& hi) {
+  if (!pass_.thinner || assumed_ || added_ > 0) return;
+  if (!is_finite(lo) || !is_finite(hi)) return;
+  assumed_ = offset_of_box(lo, hi);
+}
 float to_float(double d) {
   constexpr double kMax = std::numeric_limits<float>::max();
   if (d > kMax) return std::numeric_limits<float>::infinity();
@@ -159,7 +183,22 @@ bool CloudBuilder::add(const Vec3& p, const Vec3& normal, double intensity, std:
     ++skipped_;
     return false;
   }
-  points_.push_back(p);
+  ++added_;
+  for (int k = 0; k < 3; ++k) {
+    lo_[k] = std::min(lo_[k], p[k]);
+    hi_[k] = std::max(hi_[k], p[k]);
+  }
+  if (has_intensity_ && intensity != 0) any_intensity_ = true;
+  if (has_classification_ && cls != 0) any_classification_ = true;
+  if (pass_.thinner) {
+    if (!assumed_) return true;  // a first pass that only measures the box
+    // Exactly what thin_cloud sees: the world position of the narrowed point.
+    const Vec3f local(p - *assumed_);
+    if (!pass_.thinner->keep(*assumed_, local)) return true;
+    kept_.push_back(local);
+  } else {
+    points_.push_back(p);
+  }
   if (has_normals_)
     normals_.push_back({to_float(normal.x), to_float(normal.y), to_float(normal.z)});
   if (has_intensity_) intensity_.push_back(to_float(intensity));
@@ -168,37 +207,32 @@ bool CloudBuilder::add(const Vec3& p, const Vec3& normal, double intensity, std:
 }
 
 PointCloud CloudBuilder::finish(ReadReport* report, Format format, std::string variant) {
-  if (points_.empty()) {
+  if (added_ == 0) {
     if (skipped_ > 0) {
       fail(name_, "no points: all " + std::to_string(skipped_) +
                       " points have non-finite (NaN or infinite) coordinates");
     }
     fail(name_, "no points: the file holds no point data");
   }
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  Vec3 lo{inf, inf, inf}, hi{-inf, -inf, -inf};
-  for (const Vec3& p : points_) {
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], p[k]);
-      hi[k] = std::max(hi[k], p[k]);
-    }
-  }
   for (int k = 0; k < 3; ++k) {
     // Beyond this the float positions around the centre would overflow or be meaningless.
-    if (!(hi[k] - lo[k] <= 1e30)) {
+    if (!(hi_[k] - lo_[k] <= 1e30)) {
       char span[32];
-      std::snprintf(span, sizeof span, "%g", hi[k] - lo[k]);
+      std::snprintf(span, sizeof span, "%g", hi_[k] - lo_[k]);
       fail(name_, std::string("the points span ") + span + " units along " + "xyz"[k] +
                       ", more than single precision can hold around one offset");
     }
   }
   PointCloud cloud;
-  // The centre is computed in double and rounded to a whole unit, so the offset prints nicely
-  // and every float position is a small number near zero (best resolution for UTM-scale data).
-  for (int k = 0; k < 3; ++k) cloud.offset[k] = std::round(lo[k] * 0.5 + hi[k] * 0.5);
-  cloud.positions.resize(points_.size());
-  for (std::size_t i = 0; i < points_.size(); ++i) {
-    cloud.positions[i] = Vec3f(points_[i] - cloud.offset);
+  cloud.offset = offset_of_box(lo_, hi_);
+  if (pass_.thinner) {
+    if (!assumed_ || !(*assumed_ == cloud.offset)) throw OffsetRetry{cloud.offset};
+    cloud.positions = std::move(kept_);
+  } else {
+    cloud.positions.resize(points_.size());
+    for (std::size_t i = 0; i < points_.size(); ++i) {
+      cloud.positions[i] = Vec3f(points_[i] - cloud.offset);
+    }
   }
   cloud.normals = std::move(normals_);
   cloud.intensity = std::move(intensity_);
@@ -210,6 +244,7 @@ PointCloud CloudBuilder::finish(ReadReport* report, Format format, std::string v
     report->variant = std::move(variant);
     report->points_read = cloud.size();
     report->skipped = skipped_;
+    report->points_before_thinning = added_;
   }
   return cloud;
 }

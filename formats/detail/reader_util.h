@@ -5,6 +5,8 @@
 
 #include <cstdint>
 #include <cstring>
+#include <functional>
+#include <optional>
 #include <string>
 #include <string_view>
 #include <utility>
@@ -72,10 +74,29 @@ T load_le(const char* p) {
 // (what IEEE hardware does, but C++ leaves undefined), NaN stays NaN.
 float to_float(double d);
 
-// Collects points in double precision and turns them into a recentred PointCloud.
+// One pass of a reader over a file (formats/point_cloud_io.cpp drives the passes).
+struct ReadPass {
+  // With ReadOptions::thin: the cloud's offset, known from a pass before; unset on the first
+  // pass, where the reader may give the builder a guess (guess_offset).
+  std::optional<Vec3> offset;
+  VoxelThinner* thinner = nullptr;  // set exactly when the read thins
+  // The reader is done with the file's bytes before this offset (a mapped file drops them).
+  std::function<void(std::size_t)> release;
+};
+
+// Thrown by CloudBuilder::finish when a thinned pass assumed another offset than the cloud's:
+// the read is repeated with `offset` (formats/point_cloud_io.cpp).
+struct OffsetRetry {
+  Vec3 offset;
+};
+
+// Collects points and turns them into a recentred PointCloud. Unthinned, it keeps every point in
+// double precision until the offset (the centre of their bounding box) is known. Thinned, it
+// narrows each point against an assumed offset at once, keeps the points the thinner keeps and
+// only the bounding box of the others; finish() then checks the assumption (OffsetRetry).
 class CloudBuilder {
  public:
-  CloudBuilder(std::string name, const ReadOptions& options);
+  CloudBuilder(std::string name, const ReadOptions& options, const ReadPass& pass);
 
   void enable_normals() { has_normals_ = true; }
   void enable_intensity() { has_intensity_ = true; }
@@ -93,7 +114,18 @@ class CloudBuilder {
   // strict() (ReadOptions::skip_non_finite is false).
   bool add(const Vec3& p, const Vec3& normal = {}, double intensity = 0, std::uint8_t cls = 0);
   bool strict() const { return !options_.skip_non_finite; }
-  std::size_t count() const { return points_.size(); }
+  std::size_t count() const { return added_; }  // finite points added, kept or not
+
+  // A thinned first pass assumes this offset (e.g. from a LAS header's box); call before add.
+  // Without a guess the first pass only measures the bounding box.
+  void guess_offset(const Vec3& lo, const Vec3& hi);
+  // The reader is done with the bytes before `byte` (see ReadPass::release).
+  void release(std::size_t byte) const {
+    if (pass_.release) pass_.release(byte);
+  }
+  // Whether any point added (kept or not) had a non-zero intensity or class.
+  bool any_intensity() const { return any_intensity_; }
+  bool any_classification() const { return any_classification_; }
 
   // Recentres and narrows; throws FormatError when no point was read.
   PointCloud finish(ReadReport* report, Format format, std::string variant);
@@ -101,7 +133,13 @@ class CloudBuilder {
  private:
   std::string name_;
   ReadOptions options_;
-  std::vector<Vec3> points_;
+  const ReadPass& pass_;
+  std::optional<Vec3> assumed_;  // thinned: the offset the kept points are narrowed against
+  std::vector<Vec3> points_;     // unthinned
+  std::vector<Vec3f> kept_;      // thinned: relative to *assumed_
+  Vec3 lo_, hi_;                 // bounding box of every finite point added
+  std::size_t added_ = 0;
+  bool any_intensity_ = false, any_classification_ = false;
   std::vector<Vec3f> normals_;
   std::vector<float> intensity_;
   std::vector<std::uint8_t> classification_;
@@ -113,13 +151,13 @@ class CloudBuilder {
 
 // The readers, one per file (read_<format>.cpp).
 PointCloud read_ply(std::string_view bytes, const std::string& name, const ReadOptions& options,
-                    ReadReport* report);
+                    const ReadPass& pass, ReadReport* report);
 PointCloud read_xyz(std::string_view bytes, const std::string& name, const ReadOptions& options,
-                    ReadReport* report);
+                    const ReadPass& pass, ReadReport* report);
 PointCloud read_las(std::string_view bytes, const std::string& name, const ReadOptions& options,
-                    ReadReport* report);
+                    const ReadPass& pass, ReadReport* report);
 PointCloud read_pcd(std::string_view bytes, const std::string& name, const ReadOptions& options,
-                    ReadReport* report);
+                    const ReadPass& pass, ReadReport* report);
 
 // Where the parts of a LAS/LAZ file are, after the header and VLR checks of read_las.
 struct LasLayout {

@@ -201,6 +201,7 @@ void decode_laz_points(const LazInput& in, const RecordSink& sink) {
                        " of its " + std::to_string(c.points) +
                        " points: its compressed data is cut off or corrupt");
     }
+    if (in.release) in.release(std::size_t(c.start + c.bytes));
   }
 }
 

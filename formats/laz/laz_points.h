@@ -22,6 +22,8 @@ struct LazInput {
   std::uint64_t count = 0;  // points the header announces
   unsigned format = 0;      // point data record format (compression bits cleared)
   std::size_t record_length = 0;
+  // Called after each chunk with the byte offset just past it (may be empty).
+  std::function<void(std::size_t)> release = {};
 };
 
 // Receives `n` records of `record_length` bytes each, the first being point `first`.

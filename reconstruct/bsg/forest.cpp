@@ -1,42 +1,117 @@
 #include "reconstruct/bsg/forest.h"
 
-#include <functional>
+#include <algorithm>
 #include <limits>
-#include <queue>
 #include <utility>
 
 namespace ramus::bsg {
+
+namespace {
+
+// Min-heap of vertices keyed by (distance, vertex) with decrease-key: every vertex is in it at
+// most once, where a heap of (distance, vertex) pairs keeps one stale entry per relaxation. Pops
+// come in the same order as from such a heap, ties by vertex index, so the forest is the same.
+// Four children per node: shallower than binary, and the children share a cache line.
+class VertexHeap {
+ public:
+  explicit VertexHeap(std::size_t n) : slot_(n, kNone) {}
+  bool empty() const { return heap_.empty(); }
+  // Inserts v or lowers its key to d (d must not be above its key).
+  void push_or_lower(std::uint32_t v, double d) {
+    std::size_t i = slot_[v];
+    if (i == kNone) {
+      i = heap_.size();
+      heap_.push_back({d, v});
+    } else {
+      heap_[i].d = d;
+    }
+    up(i);
+  }
+  std::uint32_t pop() {
+    const std::uint32_t top = heap_.front().v;
+    slot_[top] = kNone;
+    const Entry last = heap_.back();
+    heap_.pop_back();
+    if (!heap_.empty()) {
+      heap_.front() = last;
+      down(0);
+    }
+    return top;
+  }
+
+ private:
+  struct Entry {
+    double d;
+    std::uint32_t v;
+    bool operator<(const Entry& o) const { return d < o.d || (d == o.d && v < o.v); }
+  };
+  void up(std::size_t i) {
+    const Entry e = heap_[i];
+    while (i > 0) {
+      const std::size_t p = (i - 1) / 4;
+      if (!(e < heap_[p])) break;
+      heap_[i] = heap_[p];
+      slot_[heap_[i].v] = std::uint32_t(i);
+      i = p;
+    }
+    heap_[i] = e;
+    slot_[e.v] = std::uint32_t(i);
+  }
+  void down(std::size_t i) {
+    const Entry e = heap_[i];
+    const std::size_t n = heap_.size();
+    for (;;) {
+      const std::size_t first = 4 * i + 1;
+      if (first >= n) break;
+      std::size_t best = first;
+      const std::size_t end = std::min(first + 4, n);
+      for (std::size_t c = first + 1; c < end; ++c) {
+        if (heap_[c] < heap_[best]) best = c;
+      }
+      if (!(heap_[best] < e)) break;
+      heap_[i] = heap_[best];
+      slot_[heap_[i].v] = std::uint32_t(i);
+      i = best;
+    }
+    heap_[i] = e;
+    slot_[e.v] = std::uint32_t(i);
+  }
+  std::vector<Entry> heap_;
+  std::vector<std::uint32_t> slot_;  // position of each vertex in heap_, kNone when absent
+};
+
+}  // namespace
 
 Forest shortest_path_forest(const Graph& graph, const std::vector<std::uint32_t>& roots) {
   const std::size_t n = graph.size();
   Forest f;
   f.parent.assign(n, kNone);
   f.tree.assign(n, kNone);
+  f.order.reserve(n);
   std::vector<double> dist(n, std::numeric_limits<double>::infinity());
   std::vector<std::uint8_t> done(n, 0);
-  // (distance, vertex): ties resolve by vertex index, so the forest is deterministic.
-  using Item = std::pair<double, std::uint32_t>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<Item>> heap;
+  VertexHeap heap(n);
   for (std::uint32_t t = 0; t < roots.size(); ++t) {
     const std::uint32_t r = roots[t];
     if (dist[r] == 0) continue;  // two bases on one vertex: the first keeps it
     dist[r] = 0;
     f.tree[r] = t;
-    heap.push({0.0, r});
+    heap.push_or_lower(r, 0.0);
   }
   while (!heap.empty()) {
-    auto [d, u] = heap.top();
-    heap.pop();
-    if (done[u]) continue;
+    const std::uint32_t u = heap.pop();
     done[u] = 1;
     f.order.push_back(u);
+    const double d = dist[u];
     for (const Arc& a : graph.adj[u]) {
       const double nd = d + a.weight;
       if (nd < dist[a.to]) {
         dist[a.to] = nd;
         f.parent[a.to] = u;
         f.tree[a.to] = f.tree[u];
-        heap.push({nd, a.to});
+        // (A settled vertex cannot get shorter with weights >= 0; like the stale entries of a
+        // pair heap, it would not be settled again.)
+        if (!done[a.to]) heap.push_or_lower(a.to, nd);
       }
     }
   }

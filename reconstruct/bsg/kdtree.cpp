@@ -5,7 +5,12 @@
 namespace ramus::bsg {
 
 PointIndex::PointIndex(const std::vector<Eigen::Vector3d>& pts, std::vector<std::uint32_t> ids)
-    : pts_(pts), ids_(std::move(ids)) {
+    : size_(ids.empty() ? pts.size() : ids.size()), ids_(std::move(ids)) {
+  coords_.resize(3 * size_);
+  for (std::size_t i = 0; i < size_; ++i) {
+    const Eigen::Vector3d& p = ids_.empty() ? pts[i] : pts[ids_[i]];
+    coords_[3 * i] = p.x(), coords_[3 * i + 1] = p.y(), coords_[3 * i + 2] = p.z();
+  }
   tree_ = std::make_unique<Tree>(3, *this, nanoflann::KDTreeSingleIndexAdaptorParams(16));
 }
 

@@ -11,10 +11,12 @@ namespace ramus::bsg {
 
 class PointIndex {
  public:
-  // Indexes pts[ids[i]] (all of pts when ids is empty). Both must outlive the index.
+  // Indexes pts[ids[i]] (all of pts when ids is empty). The coordinates are copied, in index
+  // order and contiguous (3 doubles a point): the tree's build and searches read them at every
+  // step, and reading them through ids and Eigen vectors was a good part of the searches' time.
   explicit PointIndex(const std::vector<Eigen::Vector3d>& pts, std::vector<std::uint32_t> ids = {});
 
-  std::size_t size() const { return ids_.empty() ? pts_.size() : ids_.size(); }
+  std::size_t size() const { return size_; }
   // Up to k nearest (original indices into pts) with squared distances, nearest first.
   std::size_t knn(const Eigen::Vector3d& q, std::size_t k, std::uint32_t* out, double* d2) const;
   // The nearest point's index, or kNone when the index is empty.
@@ -29,19 +31,19 @@ class PointIndex {
 
   // nanoflann's dataset interface.
   std::size_t kdtree_get_point_count() const { return size(); }
-  double kdtree_get_pt(std::size_t i, std::size_t dim) const { return at(i)[int(dim)]; }
+  double kdtree_get_pt(std::size_t i, std::size_t dim) const { return coords_[3 * i + dim]; }
   template <class B>
   bool kdtree_get_bbox(B&) const {
     return false;
   }
 
  private:
-  const Eigen::Vector3d& at(std::size_t i) const { return ids_.empty() ? pts_[i] : pts_[ids_[i]]; }
   std::uint32_t original(std::size_t i) const { return ids_.empty() ? std::uint32_t(i) : ids_[i]; }
 
   using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointIndex>,
                                                    PointIndex, 3, std::uint32_t>;
-  const std::vector<Eigen::Vector3d>& pts_;
+  std::size_t size_;
+  std::vector<double> coords_;  // x, y, z of indexed point i at 3i
   std::vector<std::uint32_t> ids_;
   std::unique_ptr<Tree> tree_;
 };
