@@ -25,6 +25,15 @@ const char* source_of(const std::string& kase) {
   if (kase == "b") {  // parametric binary tree
     return "lsystem b { axiom A(1); A(s) -> F(s) [ + A(s / 1.456) ] [ - A(s / 1.456) ]; }";
   }
+  if (kase == "s") {  // ABOP fig. 1.27, stochastic (examples/abop/fig1_27.ramus)
+    return "lsystem s { angle 22.5; seed 1; axiom F;"
+           "  F -> (0.33) F[+F]F[-F]F | (0.33) F[+F]F | (0.34) F[-F]F; }";
+  }
+  if (kase == "p") {  // the binary tree of (b) with a stochastic choice between two shapes
+    return "lsystem p { seed 1; axiom A(1);"
+           "  A(s) -> (0.5) F(s) [ + A(s / 1.456) ] [ - A(s / 1.456) ]"
+           "        | (0.5) F(s) [ - A(s / 1.456) ] + A(s / 1.2); }";
+  }
   if (kase == "c1") {  // ABOP fig. 1.31a (0 and 1 are the modules Z and O here)
     return R"(module Z, O;
       lsystem c1 { ignore + - F; angle 22.5; axiom F O F O F O;

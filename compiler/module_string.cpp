@@ -2,10 +2,28 @@
 
 #include <cctype>
 #include <charconv>
+#include <cstdlib>
+#include <new>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#endif
 
 #include "core/number_text.h"
 
 namespace ramus {
+
+void* allocate_large(std::size_t bytes) {
+  const std::size_t rounded = (bytes + kLargeBuffer - 1) / kLargeBuffer * kLargeBuffer;
+  void* p = std::aligned_alloc(kLargeBuffer, rounded);
+  if (!p) throw std::bad_alloc();
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  madvise(p, rounded, MADV_HUGEPAGE);  // a hint: without huge pages it changes nothing
+#endif
+  return p;
+}
+
+void free_large(void* p) noexcept { std::free(p); }
 
 namespace {
 bool is_word(const std::string& name) {
