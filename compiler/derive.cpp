@@ -128,9 +128,9 @@ void check_successor_arity(const ir::Grammar& g) {
     for (std::uint32_t m = alt.succ_begin; m < alt.succ_end; ++m) {
       if (g.successors[m].nargs <= kMaxModuleParams) continue;
       const ir::Production& p = g.productions[alt.production];
-      throw DeriveError(location_of(g, p.where) + ": production `" + p.text + "` writes a module with " +
-                        std::to_string(g.successors[m].nargs) + " parameters; a module holds at most " +
-                        std::to_string(kMaxModuleParams));
+      throw DeriveError(location_of(g, p.where) + ": production `" + p.text +
+                        "` writes a module with " + std::to_string(g.successors[m].nargs) +
+                        " parameters; a module holds at most " + std::to_string(kMaxModuleParams));
     }
   }
 }
@@ -164,32 +164,67 @@ bool same_pure_code(const ir::Grammar& g, ir::CodeId a, ir::CodeId b) {
   return true;
 }
 
-// For every argument of every alternative (numbered through the alternative's successor, as
-// they are written), the number of an earlier argument of the same alternative with the same
-// pure code, or kNoAlias: its value is copied instead of evaluated again.
-constexpr std::uint16_t kNoAlias = 0xffff;
-void alias_arguments(const ir::Grammar& g, std::vector<std::uint32_t>& first,
-                     std::vector<std::uint16_t>& alias) {
-  first.assign(g.alternatives.size(), 0);
-  alias.clear();
-  std::vector<ir::CodeId> codes;
-  for (std::size_t a = 0; a < g.alternatives.size(); ++a) {
-    const ir::Alternative& alt = g.alternatives[a];
-    first[a] = std::uint32_t(alias.size());
-    codes.clear();
-    for (std::uint32_t m = alt.succ_begin; m < alt.succ_end; ++m) {
-      const ir::SuccModule& sm = g.successors[m];
-      for (std::uint32_t k = 0; k < sm.nargs; ++k) codes.push_back(g.args[sm.arg_begin + k]);
-    }
-    for (std::size_t k = 0; k < codes.size(); ++k) {
-      std::uint16_t same = kNoAlias;
-      for (std::size_t j = 0; j < k && j < kNoAlias && same == kNoAlias; ++j) {
-        if (same_pure_code(g, codes[j], codes[k])) same = std::uint16_t(j);
+// An alternative's successor flattened for the write sweep: its symbols, their argument
+// counts and one ArgOp per argument, in the order they are written.
+struct ArgOp {
+  enum Kind : std::uint8_t { Same, Constant, Param, ParamOpConst, General };
+  Kind kind = General;
+  ir::Op op = ir::Op::Add;
+  std::uint16_t same = 0;  // Same: an earlier argument of the alternative with the same pure code
+  std::uint32_t slot = 0;
+  double value = 0;
+  ir::CodeId code = 0;
+};
+struct Successors {
+  std::vector<std::uint32_t> first_module, first_arg;  // per alternative
+  std::vector<ir::SymbolId> symbols;
+  std::vector<std::uint16_t> nargs;
+  std::vector<ArgOp> args;
+
+  explicit Successors(const ir::Grammar& g) {
+    for (const ir::Alternative& alt : g.alternatives) {
+      first_module.push_back(std::uint32_t(symbols.size()));
+      const auto first = std::uint32_t(args.size());
+      first_arg.push_back(first);
+      for (std::uint32_t m = alt.succ_begin; m < alt.succ_end; ++m) {
+        const ir::SuccModule& sm = g.successors[m];
+        symbols.push_back(sm.symbol);
+        nargs.push_back(sm.nargs);
+        for (std::uint32_t k = 0; k < sm.nargs; ++k) args.push_back(op(g, sm.arg_begin + k, first));
       }
-      alias.push_back(same);
     }
   }
-}
+
+  ArgOp op(const ir::Grammar& g, std::uint32_t arg, std::uint32_t first) const {
+    ArgOp a;
+    a.code = g.args[arg];
+    for (std::uint32_t j = first; j < args.size() && j - first < 0xffff; ++j) {
+      if (same_pure_code(g, args[j].code, a.code)) {
+        a.kind = ArgOp::Same;
+        a.same = std::uint16_t(j - first);
+        return a;
+      }
+    }
+    const ir::Code& c = g.codes[a.code];
+    a.op = c.op;
+    a.slot = c.slot;
+    a.value = c.value;
+    switch (c.shape) {
+      case ir::Code::Shape::Constant:
+        a.kind = ArgOp::Constant;
+        break;
+      case ir::Code::Shape::Param:
+        a.kind = ArgOp::Param;
+        break;
+      case ir::Code::Shape::ParamOpConst:
+        a.kind = ArgOp::ParamOpConst;
+        break;
+      case ir::Code::Shape::General:
+        break;
+    }
+    return a;
+  }
+};
 
 // Everything a sweep reads; one per pass, shared read-only by the chunks.
 struct Pass {
@@ -199,10 +234,9 @@ struct Pass {
   const ContextTables* ctx;
   const PassInfo& info;
   std::vector<SymbolPlan> plans;
-  std::vector<double> weights;       // SymbolPlan::Weighted
-  std::uint64_t stream = 0;          // stream_prefix(seed, key): each module's streams from it
-  std::vector<std::uint32_t> alias_first;  // alias_arguments()
-  std::vector<std::uint16_t> alias;
+  std::vector<double> weights;  // SymbolPlan::Weighted
+  std::uint64_t stream = 0;     // stream_prefix(seed, key): each module's streams from it
+  Successors succ;
   // Per chunk, for each module its symbol does not decide (in order): 0 copy, else
   // alternative + 1.
   std::vector<std::vector<std::uint32_t>>* choices = nullptr;
@@ -407,7 +441,7 @@ struct Pass {
       } else {
         const ir::Alternative& alt = g.alternatives[a - 1];
         count = alt.succ_end - alt.succ_begin;
-        write(i, a - 1, w, o, pofs, slots);
+        write(i, a - 1, w, o, pofs, iparams + ip, slots);
         pofs += alt.out_params;
       }
       if (new_origins) std::fill_n(new_origins + o, count, (*origins)[i]);
@@ -416,29 +450,59 @@ struct Pass {
     }
   }
 
-  // Writes module i's successor at output module o, parameter pofs; arguments draw from
-  // (seed, key, 2i+1).
+  // Writes module i (parameters x) 's successor at output module o, parameter pofs; arguments
+  // draw from (seed, key, 2i+1).
   void write(std::size_t i, std::uint32_t alt_id, const Out& w, std::size_t o, std::uint32_t pofs,
-             double* slots) const {
+             const double* x, double* slots) const {
     const ir::Alternative& alt = g.alternatives[alt_id];
     const ir::Production& p = g.productions[alt.production];
-    match(p, i, slots);  // re-binds the slots chosen in the first sweep
+    if (p.has_context()) {
+      match_production(g, p, in, ctx, i, slots);  // re-binds the slots chosen in the first sweep
+    } else if (!p.predecessor.any_params) {       // the first sweep matched the count
+      for (std::uint32_t k = 0; k < p.predecessor.nparams; ++k) {
+        slots[p.predecessor.first_slot + k] = x[k];
+      }
+    }
     LazyRng rng(stream, 2 * std::uint64_t(i) + 1);
-    const std::uint16_t* same = alias.data() + alias_first[alt_id];
+    const ir::SymbolId* sym = succ.symbols.data() + succ.first_module[alt_id];
+    const std::uint16_t* nargs = succ.nargs.data() + succ.first_module[alt_id];
+    const ArgOp* arg = succ.args.data() + succ.first_arg[alt_id];
     double* const first_param = w.params + pofs;
     try {
-      for (std::uint32_t m = alt.succ_begin; m < alt.succ_end; ++m, ++o) {
-        const ir::SuccModule& sm = g.successors[m];
-        w.sym[o] = sm.symbol;
+      for (std::uint32_t m = 0, n = alt.succ_end - alt.succ_begin; m < n; ++m, ++o) {
+        w.sym[o] = sym[m];
         w.begin(o, pofs);
-        for (std::uint32_t a = 0; a < sm.nargs; ++a, ++same) {
-          w.params[pofs++] = *same != kNoAlias ? first_param[*same]
-                                               : eval(g, g.args[sm.arg_begin + a], slots, rng);
+        for (std::uint32_t a = 0; a < nargs[m]; ++a, ++arg) {
+          w.params[pofs++] = value(*arg, first_param, slots, rng);
         }
       }
     } catch (const ExprError& err) {
       throw DeriveError(describe(g, p, err, info, i));
     }
+  }
+
+  // eval() (compiler/expr_vm.h) for a flattened argument.
+  double value(const ArgOp& a, const double* first_param, const double* slots, LazyRng& rng) const {
+    switch (a.kind) {
+      case ArgOp::Same:
+        return first_param[a.same];
+      case ArgOp::Constant:
+        return a.value;
+      case ArgOp::Param:
+        return slots[a.slot];
+      case ArgOp::ParamOpConst: {
+        const double x = slots[a.slot];
+        const double r = a.op == ir::Op::Add   ? x + a.value
+                         : a.op == ir::Op::Sub ? x - a.value
+                         : a.op == ir::Op::Mul ? x * a.value
+                                               : x / a.value;
+        if (std::isfinite(r)) return r;
+        break;
+      }
+      case ArgOp::General:
+        break;
+    }
+    return run_code(g, a.code, slots, rng);
   }
 };
 
@@ -508,10 +572,20 @@ bool apply_pass(const ir::Grammar& g, ir::Kind kind, const ModuleString& in, Mod
   ContextTables ctx_tables;
   if (table.has_context) ctx_tables.build(in, g.ignored, table.has_left, table.has_right);
   check_successor_arity(g);
-  Pass pass{g,    table, in, table.has_context ? &ctx_tables : nullptr, info, {}, {},
-            stream_prefix(info.seed, info.key), {}, {}, {}, {}, {}, {}};
+  Pass pass{g,
+            table,
+            in,
+            table.has_context ? &ctx_tables : nullptr,
+            info,
+            {},
+            {},
+            stream_prefix(info.seed, info.key),
+            Successors(g),
+            {},
+            {},
+            {},
+            {}};
   pass.plans = plan_symbols(g, table, pass.weights);
-  alias_arguments(g, pass.alias_first, pass.alias);
   PassScratch own;
   PassScratch& scratch = info.scratch ? *info.scratch : own;
   pass.choices = &scratch.choices;
@@ -539,15 +613,6 @@ bool apply_pass(const ir::Grammar& g, ir::Kind kind, const ModuleString& in, Mod
   std::vector<std::uint32_t> new_origins;
   try {
     out.clear();
-    if (info.scratch && (out.capacity() < total || out.params_capacity() < total_params)) {
-      // derive()'s two strings take turns as output: with room for 4 x this pass's output a
-      // buffer serves again two passes later without being allocated (and paged in) anew, as
-      // far as the string at most doubles per step. Untouched room costs address space only.
-      try {
-        out.reserve(4 * total, 4 * total_params);
-      } catch (const std::bad_alloc&) {
-      }
-    }
     out.resize_for_fill(total, total_params);
     if (origins) new_origins.resize(total);
   } catch (const std::bad_alloc&) {
