@@ -102,6 +102,8 @@ class ModuleString {
     low_.assign(1, 0);
     base_.assign(1, 0);
   }
+  std::size_t capacity() const { return sym_.capacity(); }
+  std::size_t params_capacity() const { return params_.capacity(); }
   void reserve(std::size_t modules, std::size_t params) {
     sym_.reserve(modules);
     low_.reserve(modules + 1);
