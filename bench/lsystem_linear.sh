@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # Is derivation linear? CPU time per module of bench_lsystem (one thread) for strings from about
 # 1e4 to 1.7e7 modules, on the plain system (a), the parametric tree (b) and its stochastic
-# variant (p) of bench/lsystem_vs_lindenmayer.sh. Each point is the median of three runs; a run
+# variant (p) of bench/lsystem_vs_lindenmayer.sh. Each point is the median of three runs (by
+# CPU time, shown with its user and system parts: the system part is mostly the kernel supplying
+# fresh pages, and grows when the machine is short of free memory); a run
 # repeats the derivation until it has produced about 3e7 modules, so small strings are timed
 # over many derivations. Prints a Markdown table (and the largest / smallest time per module of
 # each system); with PNG, also draws the plot there (an SVG rendered by headless Chromium, the
@@ -30,18 +32,21 @@ for spec in "${specs[@]}"; do
     for run in 1 2 3; do
       "$bench" "$kase" "$n" 1 "$repeat" |
         awk '$1=="length"{l=$2} $1=="modules_total"{t=$2} $1=="cpu_seconds"{c=$2}
-             END{printf "%d %.4f\n", l, c / t * 1e9}'
-    done | sort -k2 -g | sed -n 2p | awk -v k="$kase" -v n="$n" '{print k, n, $1, $2}' >>"$points"
+             $1=="user_seconds"{u=$2} $1=="system_seconds"{y=$2}
+             END{printf "%d %.4f %.4f %.4f\n", l, c / t * 1e9, u / t * 1e9, y / t * 1e9}'
+    done | sort -k2 -g | sed -n 2p |
+      awk -v k="$kase" -v n="$n" '{print k, n, $1, $2, $3, $4}' >>"$points"
   done
 done
 
-echo "| system | n | modules | ns per module (CPU, 1 thread) |"
-echo "|---|---|---|---|"
-awk '{printf "| (%s) | %d | %d | %.2f |\n", $1, $2, $3, $4}' "$points"
+echo "| system | n | modules | ns per module (CPU, 1 thread) | of it user | of it system |"
+echo "|---|---|---|---|---|---|"
+awk '{printf "| (%s) | %d | %d | %.2f | %.2f | %.2f |\n", $1, $2, $3, $4, $5, $6}' "$points"
 echo
-awk '{ if (!($1 in lo) || $4 < lo[$1]) lo[$1] = $4; if (!($1 in hi) || $4 > hi[$1]) hi[$1] = $4 }
-     END { for (k in lo) printf "(%s): largest / smallest time per module = %.2f\n", k, hi[k] / lo[k] }' \
-  "$points" | sort
+awk '{ if (!($1 in lo) || $4 < lo[$1]) lo[$1] = $4; if (!($1 in hi) || $4 > hi[$1]) hi[$1] = $4
+       if (!($1 in ulo) || $5 < ulo[$1]) ulo[$1] = $5; if (!($1 in uhi) || $5 > uhi[$1]) uhi[$1] = $5 }
+     END { for (k in lo) printf "(%s): largest / smallest time per module = %.2f (user time alone %.2f)\n",
+                                k, hi[k] / lo[k], uhi[k] / ulo[k] }' "$points" | sort
 
 [[ -n "$png" ]] || exit 0
 command -v chromium >/dev/null || { echo "chromium is required for the picture" >&2; exit 2; }

@@ -84,8 +84,12 @@ for spec in "a 10 3 1" "s 12 3 1" "b 21 3 1" "p 21 3 1" "c1 30 200 5" "c2 16 3 1
     b | p) targets+="$kase $(ratio "$rc" "$lc") 20 "$'\n' ;;
   esac
   if [[ $ln == "$n" && "$l_len" != "$r_len" ]]; then
-    echo "    lengths differ (ramus $r_len, lindenmayer $l_len): lindenmayer's right context" \
-         "walks on past the ']' that closes a branch, where ABOP/cpfg/L-Py fail the match"
+    case $kase in
+      s | p) echo "    lengths differ (ramus $r_len, lindenmayer $l_len): each draws its own" \
+                  "random choices (lindenmayer from Math.random)" ;;
+      *) echo "    lengths differ (ramus $r_len, lindenmayer $l_len): lindenmayer's right context" \
+              "walks on past the ']' that closes a branch, where ABOP/cpfg/L-Py fail the match" ;;
+    esac
   fi
 done
 echo "rates in modules/s over all steps; x = ramus rate / lindenmayer rate; mem x = peak RSS"

@@ -6,10 +6,6 @@
 #include <mutex>
 #include <new>
 
-#if defined(__linux__)
-#include <sys/mman.h>
-#endif
-
 #include "core/number_text.h"
 
 namespace ramus {
@@ -51,12 +47,8 @@ void* allocate_buffer(std::size_t bytes) {
     if (!p) throw std::bad_alloc();
     return p;
   }
-  const std::size_t rounded = (bytes + kLargeBuffer - 1) / kLargeBuffer * kLargeBuffer;
-  void* p = std::aligned_alloc(kLargeBuffer, rounded);
+  void* p = std::malloc(bytes);
   if (!p) throw std::bad_alloc();
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  madvise(p, rounded, MADV_HUGEPAGE);  // a hint: without huge pages it changes nothing
-#endif
   return p;
 }
 

@@ -16,11 +16,9 @@
 
 namespace ramus {
 
-// Buffers of 64 KB and more come from here. From 2 MB on they are aligned to and advised as
-// transparent huge pages where the system has them, so that a pass over a fresh output faults
-// once per 2 MB instead of once per 4 KB (the page faults were 45% of a derivation's time on
-// 4 KB pages). Below 2 MB a few freed buffers are kept for the next pass or derivation instead
-// of going back to the system (which hands them out again as fresh pages, one fault each).
+// Buffers of 64 KB and more come from here. Below 2 MB a few freed buffers are kept for the
+// next pass or derivation instead of going back to the system, which hands them out again as
+// fresh pages, one page fault each (docs/engine.md, "The string").
 void* allocate_buffer(std::size_t bytes);
 void free_buffer(void* p, std::size_t bytes) noexcept;
 inline constexpr std::size_t kLargeBuffer = std::size_t(2) << 20;
