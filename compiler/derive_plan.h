@@ -4,6 +4,7 @@
 // with arguments written twice evaluated once (Successors). Internal to derive.cpp.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -163,8 +164,10 @@ struct Successors {
   ArgOp op(const ir::Grammar& g, std::uint32_t arg, std::uint32_t first) const {
     ArgOp a;
     a.code = g.args[arg];
-    for (std::uint32_t j = first; j < args.size() && j - first < 0xffff; ++j) {
-      if (same_pure_code(g, args[j].code, a.code)) {
+    // The last 64 arguments at most: planning stays linear in a long successor.
+    const std::size_t from = std::max<std::size_t>(first, args.size() > 64 ? args.size() - 64 : 0);
+    for (std::size_t j = from; j < args.size(); ++j) {
+      if (j - first <= 0xffff && same_pure_code(g, args[j].code, a.code)) {
         a.kind = ArgOp::Same;
         a.same = std::uint16_t(j - first);
         return a;
