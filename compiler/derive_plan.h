@@ -108,7 +108,7 @@ inline bool same_pure_code(const ir::Grammar& g, ir::CodeId a, ir::CodeId b) {
   if (x.random || y.random || x.shape != y.shape) return false;
   switch (x.shape) {
     case ir::Code::Shape::Constant:
-      return x.value == y.value && !std::signbit(x.value) && !std::signbit(y.value);
+      return x.value == y.value && std::signbit(x.value) == std::signbit(y.value);
     case ir::Code::Shape::Param:
       return x.slot == y.slot;
     case ir::Code::Shape::ParamOpConst:
