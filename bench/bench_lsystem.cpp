@@ -3,7 +3,10 @@
 // usage: bench_lsystem CASE N [THREADS [REPEAT [--print]]]
 //   length L / modules_total T (sum of the lengths after each step) / seconds S (derivation,
 //   wall clock, mean of REPEAT runs) / cpu_seconds C (user + system time of all threads, mean) /
-//   string_bytes B / bytes_per_module b / bytes_per_parametric_module p / peak_rss_kb K
+//   user_seconds U / system_seconds Y (the two parts of C: the engine's own work, and the kernel's
+//   -- mostly supplying the fresh pages the strings are written to) /
+//   string_bytes B / bytes_per_module b / bytes_per_parametric_module p (its symbol, offset and
+//   parameters) / block_offset_bytes_per_module o (shared by all modules) / peak_rss_kb K
 // CPU time is what the comparison script ranks by: it does not depend on how busy the machine is.
 #include <sys/resource.h>
 
@@ -25,6 +28,15 @@ const char* source_of(const std::string& kase) {
   if (kase == "b") {  // parametric binary tree
     return "lsystem b { axiom A(1); A(s) -> F(s) [ + A(s / 1.456) ] [ - A(s / 1.456) ]; }";
   }
+  if (kase == "s") {  // ABOP fig. 1.27, stochastic (examples/abop/fig1_27.ramus)
+    return "lsystem s { angle 22.5; seed 1; axiom F;"
+           "  F -> (0.33) F[+F]F[-F]F | (0.33) F[+F]F | (0.34) F[-F]F; }";
+  }
+  if (kase == "p") {  // the binary tree of (b) with a stochastic choice between two shapes
+    return "lsystem p { seed 1; axiom A(1);"
+           "  A(s) -> (0.5) F(s) [ + A(s / 1.456) ] [ - A(s / 1.456) ]"
+           "        | (0.5) F(s) [ - A(s / 1.456) ] + A(s / 1.2); }";
+  }
   if (kase == "c1") {  // ABOP fig. 1.31a (0 and 1 are the modules Z and O here)
     return R"(module Z, O;
       lsystem c1 { ignore + - F; angle 22.5; axiom F O F O F O;
@@ -42,11 +54,15 @@ const char* source_of(const std::string& kase) {
 
 }  // namespace
 
-double cpu_seconds() {
+// User and system CPU seconds of the process so far.
+struct CpuTime {
+  double user = 0, system = 0;
+};
+CpuTime cpu_time() {
   rusage ru{};
   getrusage(RUSAGE_SELF, &ru);
-  return double(ru.ru_utime.tv_sec + ru.ru_stime.tv_sec) +
-         1e-6 * double(ru.ru_utime.tv_usec + ru.ru_stime.tv_usec);
+  return {double(ru.ru_utime.tv_sec) + 1e-6 * double(ru.ru_utime.tv_usec),
+          double(ru.ru_stime.tv_sec) + 1e-6 * double(ru.ru_stime.tv_usec)};
 }
 
 int main(int argc, char** argv) {
@@ -75,14 +91,17 @@ int main(int argc, char** argv) {
   const int repeat = argc > 4 ? std::max(1, std::atoi(argv[4])) : 1;
   ramus::DeriveStats st;
   ramus::ModuleString s;
-  double wall = 0, cpu = 0;
+  double wall = 0, user = 0, system = 0;
   for (int r = 0; r < repeat; ++r) {
     s = ramus::ModuleString();
-    const double c0 = cpu_seconds();
+    const CpuTime c0 = cpu_time();
     s = ramus::derive(g, d, &st);
-    cpu += cpu_seconds() - c0;
+    const CpuTime c1 = cpu_time();
+    user += c1.user - c0.user;
+    system += c1.system - c0.system;
     wall += st.seconds;
   }
+  const double cpu = user + system;
   std::size_t total = 0;
   for (std::size_t k = 1; k < st.lengths.size(); ++k) total += st.lengths[k];
   std::size_t parametric = 0;
@@ -91,11 +110,16 @@ int main(int argc, char** argv) {
   getrusage(RUSAGE_SELF, &ru);
   std::printf("length %zu\nmodules_total %zu\nseconds %.6f\ncpu_seconds %.6f\n", s.size(), total,
               wall / repeat, cpu / repeat);
+  std::printf("user_seconds %.6f\nsystem_seconds %.6f\n", user / repeat, system / repeat);
   std::printf("string_bytes %zu\nbytes_per_module %.2f\n", s.bytes(),
               double(s.bytes()) / double(s.size()));
   if (parametric) {
-    std::printf("bytes_per_parametric_module %.2f\n",
-                double(ramus::module_bytes(s.param_count() / parametric)));
+    // A parametric module's own bytes (symbol, offset, parameters); every module also shares
+    // the block offsets, 4 bytes per 1024 modules, printed apart.
+    std::printf(
+        "bytes_per_parametric_module %.2f\n",
+        double(ramus::module_bytes(0)) + 8.0 * double(s.param_count()) / double(parametric));
+    std::printf("block_offset_bytes_per_module %.4f\n", 4.0 / double(1u << ramus::kBlockShift));
   }
   std::printf("peak_rss_kb %ld\n", ru.ru_maxrss);
   if (argc > 5 && std::strcmp(argv[5], "--print") == 0) {

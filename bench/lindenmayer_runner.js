@@ -24,6 +24,36 @@ function system(kase) {
         },
       });
     }
+    case 's':  // ABOP fig. 1.27, stochastic: the library's weighted successors
+      return new LSystem({
+        axiom: 'F',
+        productions: {
+          F: {successors: [{weight: 0.33, successor: 'F[+F]F[-F]F'},
+                           {weight: 0.33, successor: 'F[+F]F'},
+                           {weight: 0.34, successor: 'F[-F]F'}]},
+        },
+      });
+    case 'p': {  // (b) with a stochastic choice: weighted successors that are functions
+      const sym = (s) => ({symbol: s});
+      return new LSystem({
+        axiom: [{symbol: 'A', params: [1]}],
+        productions: {
+          A: {successors: [
+            {weight: 0.5, successor: ({part}) => {
+              const s = part.params[0], t = s / 1.456;
+              return [{symbol: 'F', params: [s]}, sym('['), sym('+'), {symbol: 'A', params: [t]},
+                      sym(']'), sym('['), sym('-'), {symbol: 'A', params: [t]}, sym(']')];
+            }},
+            {weight: 0.5, successor: ({part}) => {
+              const s = part.params[0];
+              return [{symbol: 'F', params: [s]}, sym('['), sym('-'),
+                      {symbol: 'A', params: [s / 1.456]}, sym(']'), sym('+'),
+                      {symbol: 'A', params: [s / 1.2]}];
+            }},
+          ]},
+        },
+      });
+    }
     case 'c1':  // ABOP fig. 1.31a, context-sensitive, ignore + - F
       return new LSystem({
         axiom: 'F1F1F1',

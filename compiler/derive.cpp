@@ -4,18 +4,26 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <exception>
 #include <new>
 #include <thread>
 
 #include "compiler/bracket_balance.h"
 #include "compiler/context.h"
+#include "compiler/derive_plan.h"
 #include "compiler/expr_vm.h"
 #include "compiler/parallel_chunks.h"
 
 namespace ramus {
 
 namespace {
+
+using derive_plan::ArgOp;
+using derive_plan::pick_weighted;
+using derive_plan::plan_symbols;
+using derive_plan::Successors;
+using derive_plan::SymbolPlan;
 
 constexpr std::size_t kChunk = 1 << 15;  // modules per chunk: fixed, so output ignores threads
 
@@ -34,6 +42,20 @@ std::string describe(const ir::Grammar& g, const ir::Production& p, const ExprEr
          ") at " + info.where + ", module " + std::to_string(i);
 }
 
+// A module holds at most kMaxModuleParams parameters (compiler/module_string.h): a successor
+// with more is refused before it is written (lowering refuses it too; an .rmb may hold one).
+void check_successor_arity(const ir::Grammar& g) {
+  for (const ir::Alternative& alt : g.alternatives) {
+    for (std::uint32_t m = alt.succ_begin; m < alt.succ_end; ++m) {
+      if (g.successors[m].nargs <= kMaxModuleParams) continue;
+      const ir::Production& p = g.productions[alt.production];
+      throw DeriveError(location_of(g, p.where) + ": production `" + p.text +
+                        "` writes a module with " + std::to_string(g.successors[m].nargs) +
+                        " parameters; a module holds at most " + std::to_string(kMaxModuleParams));
+    }
+  }
+}
+
 // Everything a sweep reads; one per pass, shared read-only by the chunks.
 struct Pass {
   const ir::Grammar& g;
@@ -41,7 +63,25 @@ struct Pass {
   const ModuleString& in;
   const ContextTables* ctx;
   const PassInfo& info;
-  PodVector<std::uint32_t> choice;  // per input module: 0 copy, else alternative + 1
+  std::vector<SymbolPlan> plans;
+  std::vector<double> weights;  // SymbolPlan::Weighted
+  std::uint64_t stream = 0;     // stream_prefix(seed, key): each module's streams from it
+  Successors succ;
+  // Per chunk, for each module its symbol does not decide (in order): 0 copy, else
+  // alternative + 1.
+  std::vector<std::vector<std::uint32_t>>* choices = nullptr;
+
+  // Binds production p's slots for module i and checks its predecessor and contexts.
+  bool match(const ir::Production& p, std::size_t i, double* slots) const {
+    if (p.has_context()) return match_production(g, p, in, ctx, i, slots);
+    const ir::Pattern& pat = p.predecessor;
+    if (in.symbol(i) != pat.symbol) return false;
+    if (pat.any_params) return true;
+    if (in.nparams(i) != pat.nparams) return false;
+    const double* x = in.params(i);
+    for (std::uint32_t k = 0; k < pat.nparams; ++k) slots[pat.first_slot + k] = x[k];
+    return true;
+  }
 
   // Picks the alternative for module i (0: copied). Guards and probabilities draw from the
   // module's matching stream (seed, key, 2i).
@@ -49,13 +89,13 @@ struct Pass {
     const ir::SymbolId s = in.symbol(i);
     const std::uint32_t b = table.first[s], e = table.first[s + 1];
     if (b == e) return 0;
-    LazyRng rng(info.seed, info.key, 2 * std::uint64_t(i));
+    LazyRng rng(stream, 2 * std::uint64_t(i));
     if (g.selection == ir::Selection::Nearest && &table == &g.rewrite) {
       return choose_nearest(i, b, e, slots, rng);
     }
     for (std::uint32_t k = b; k < e; ++k) {
       const ir::Production& p = g.productions[table.index[k]];
-      if (!match_production(g, p, in, ctx, i, slots)) continue;
+      if (!match(p, i, slots)) continue;
       try {
         if (p.guard != ir::kNoCode && eval(g, p.guard, slots, rng) == 0) continue;
         return alternative(p, slots, rng);
@@ -76,7 +116,7 @@ struct Pass {
     double best_d2 = 0;
     for (std::uint32_t k = b; k < e; ++k) {
       const ir::Production& p = g.productions[table.index[k]];
-      if (!match_production(g, p, in, ctx, i, slots)) continue;
+      if (!match(p, i, slots)) continue;
       try {
         if (p.guard != ir::kNoCode && eval(g, p.guard, slots, rng) == 0) continue;
         if (p.key.empty()) {
@@ -99,7 +139,7 @@ struct Pass {
     const std::uint32_t chosen = best != e ? best : first;
     if (chosen == e) return 0;
     const ir::Production& p = g.productions[table.index[chosen]];
-    match_production(g, p, in, ctx, i, slots);  // the slots of the chosen production
+    match(p, i, slots);  // the slots of the chosen production
     try {
       return alternative(p, slots, rng);
     } catch (const ExprError& err) {
@@ -143,16 +183,40 @@ struct Pass {
   // Per-chunk output sizes (filled by choose_chunk, then prefix-summed into offsets).
   std::vector<std::uint64_t> mods, pars, hits;
 
-  // First sweep over chunk c: choose every module's alternative and count the output.
+  // First sweep over chunk c: choose the alternative of every module that needs a choice and
+  // count the output.
   void choose_chunk(std::size_t c) {
     double slots[ir::kMaxSlots];
+    const ir::SymbolId* sym = in.symbols_data();
+    const std::uint16_t* low = in.lows_data();
+    const SymbolPlan* plan = plans.data();
+    std::vector<std::uint32_t>& choice = (*choices)[c];
+    choice.clear();
     std::uint64_t m = 0, p = 0, h = 0;
     for (std::size_t i = c * kChunk, e = std::min(in.size(), i + kChunk); i < e; ++i) {
-      const std::uint32_t a = choose(i, slots);
-      choice[i] = a;
+      const SymbolPlan& pl = plan[sym[i]];
+      const std::uint32_t np = std::uint16_t(low[i + 1] - low[i]);
+      if (pl.kind == SymbolPlan::Copy) {
+        m += 1;
+        p += np;
+        continue;
+      }
+      if (pl.fixed_for(np)) {
+        m += pl.mods;
+        p += pl.params;
+        ++h;
+        continue;
+      }
+      const std::uint32_t a =
+          pl.kind == SymbolPlan::Weighted && pl.takes(np)
+              ? pl.alt + 1 +
+                    pick_weighted(weights.data() + pl.weights, pl.params,
+                                  stream_from_prefix(stream, 2 * std::uint64_t(i)))
+              : choose(i, slots);
+      choice.push_back(a);
       if (a == 0) {
         m += 1;
-        p += in.nparams(i);
+        p += np;
       } else {
         const ir::Alternative& alt = g.alternatives[a - 1];
         m += alt.succ_end - alt.succ_begin;
@@ -165,55 +229,110 @@ struct Pass {
     hits[c] = h;
   }
 
+  // Where the second sweep writes: the output's raw arrays.
+  struct Out {
+    ir::SymbolId* sym;
+    std::uint16_t* low;
+    std::uint32_t* base;
+    double* params;
+    void begin(std::size_t o, std::uint32_t pofs) const {
+      low[o] = std::uint16_t(pofs);
+      if ((o & ((std::size_t(1) << kBlockShift) - 1)) == 0) base[o >> kBlockShift] = pofs;
+    }
+  };
+
   // Second sweep over chunk c: write its modules at the offsets mods[c], pars[c].
   void write_chunk(std::size_t c, ModuleString& out, const std::vector<std::uint32_t>* origins,
                    std::uint32_t* new_origins) const {
     double slots[ir::kMaxSlots];
-    ir::SymbolId* sym = out.symbols_data();
-    std::uint32_t* begins = out.begins_data();
-    double* params = out.params_data();
+    const Out w{out.symbols_data(), out.lows_data(), out.bases_data(), out.params_data()};
+    const ir::SymbolId* sym = in.symbols_data();
+    const std::uint16_t* low = in.lows_data();
+    const double* iparams = in.params_data();
+    const SymbolPlan* plan = plans.data();
     std::size_t o = mods[c];
     std::uint32_t pofs = std::uint32_t(pars[c]);
-    for (std::size_t i = c * kChunk, e = std::min(in.size(), i + kChunk); i < e; ++i) {
-      const std::uint32_t a = choice[i];
+    const std::size_t b = c * kChunk, e = std::min(in.size(), b + kChunk);
+    std::uint32_t ip = in.begin(b);  // module i's parameters in the input
+    const std::uint32_t* choice = (*choices)[c].data();
+    for (std::size_t i = b; i < e; ++i) {
+      const ir::SymbolId s = sym[i];
+      const SymbolPlan& pl = plan[s];
+      const std::uint32_t np = std::uint16_t(low[i + 1] - low[i]);
+      const std::uint32_t a = pl.kind == SymbolPlan::Copy ? 0
+                              : pl.fixed_for(np)          ? pl.alt + 1
+                                                          : *choice++;
       std::size_t count = 1;
       if (a == 0) {
-        sym[o] = in.symbol(i);
-        begins[o] = pofs;
-        const std::uint32_t np = in.nparams(i);
-        std::copy_n(in.params(i), np, params + pofs);
+        w.sym[o] = s;
+        w.begin(o, pofs);
+        for (std::uint32_t k = 0; k < np; ++k) w.params[pofs + k] = iparams[ip + k];
         pofs += np;
       } else {
         const ir::Alternative& alt = g.alternatives[a - 1];
         count = alt.succ_end - alt.succ_begin;
-        write(i, a - 1, sym + o, begins + o, params, pofs, slots);
+        write(i, a - 1, w, o, pofs, iparams + ip, slots);
         pofs += alt.out_params;
       }
       if (new_origins) std::fill_n(new_origins + o, count, (*origins)[i]);
       o += count;
+      ip += np;
     }
   }
 
-  // Writes module i's successor at sym/params/begins; arguments draw from (seed, key, 2i+1).
-  void write(std::size_t i, std::uint32_t alt_id, ir::SymbolId* sym, std::uint32_t* begins,
-             double* params, std::uint32_t pofs, double* slots) const {
+  // Writes module i (parameters x) 's successor at output module o, parameter pofs; arguments
+  // draw from (seed, key, 2i+1).
+  void write(std::size_t i, std::uint32_t alt_id, const Out& w, std::size_t o, std::uint32_t pofs,
+             const double* x, double* slots) const {
     const ir::Alternative& alt = g.alternatives[alt_id];
     const ir::Production& p = g.productions[alt.production];
-    match_production(g, p, in, ctx, i, slots);  // re-binds the slots chosen in the first sweep
-    LazyRng rng(info.seed, info.key, 2 * std::uint64_t(i) + 1);
-    std::size_t o = 0;
+    if (p.has_context()) {
+      match_production(g, p, in, ctx, i, slots);  // re-binds the slots chosen in the first sweep
+    } else if (!p.predecessor.any_params) {       // the first sweep matched the count
+      for (std::uint32_t k = 0; k < p.predecessor.nparams; ++k) {
+        slots[p.predecessor.first_slot + k] = x[k];
+      }
+    }
+    LazyRng rng(stream, 2 * std::uint64_t(i) + 1);
+    const ir::SymbolId* sym = succ.symbols.data() + succ.first_module[alt_id];
+    const std::uint16_t* nargs = succ.nargs.data() + succ.first_module[alt_id];
+    const ArgOp* arg = succ.args.data() + succ.first_arg[alt_id];
+    double* const first_param = w.params + pofs;
     try {
-      for (std::uint32_t m = alt.succ_begin; m < alt.succ_end; ++m, ++o) {
-        const ir::SuccModule& sm = g.successors[m];
-        sym[o] = sm.symbol;
-        begins[o] = pofs;
-        for (std::uint32_t a = 0; a < sm.nargs; ++a) {
-          params[pofs++] = eval(g, g.args[sm.arg_begin + a], slots, rng);
+      for (std::uint32_t m = 0, n = alt.succ_end - alt.succ_begin; m < n; ++m, ++o) {
+        w.sym[o] = sym[m];
+        w.begin(o, pofs);
+        for (std::uint32_t a = 0; a < nargs[m]; ++a, ++arg) {
+          w.params[pofs++] = value(*arg, first_param, slots, rng);
         }
       }
     } catch (const ExprError& err) {
       throw DeriveError(describe(g, p, err, info, i));
     }
+  }
+
+  // eval() (compiler/expr_vm.h) for a flattened argument.
+  double value(const ArgOp& a, const double* first_param, const double* slots, LazyRng& rng) const {
+    switch (a.kind) {
+      case ArgOp::Same:
+        return first_param[a.same];
+      case ArgOp::Constant:
+        return a.value;
+      case ArgOp::Param:
+        return slots[a.slot];
+      case ArgOp::ParamOpConst: {
+        const double x = slots[a.slot];
+        const double r = a.op == ir::Op::Add   ? x + a.value
+                         : a.op == ir::Op::Sub ? x - a.value
+                         : a.op == ir::Op::Mul ? x * a.value
+                                               : x / a.value;
+        if (std::isfinite(r)) return r;
+        break;
+      }
+      case ArgOp::General:
+        break;
+    }
+    return run_code(g, a.code, slots, rng);
   }
 };
 
@@ -257,7 +376,8 @@ void check_limits(const PassInfo& info, std::uint64_t modules, std::uint64_t par
                       " (--max-modules)");
   }
   const std::uint64_t limit = info.max_bytes ? info.max_bytes : default_memory_limit();
-  const double need = double(working) + double(modules) * module_bytes(0) + double(params) * 8;
+  const double need = double(working) + double(modules) * module_bytes(0) + double(modules) / 256 +
+                      double(params) * 8;  // 4 bytes of block offset per 1024 modules
   if (need > double(limit) || params > 0xffffffffull) {
     throw DeriveError(info.where + ": the string would need " + gigabytes(need) + " (" +
                       std::to_string(modules) + " modules), more than the memory limit of " +
@@ -281,10 +401,27 @@ bool apply_pass(const ir::Grammar& g, ir::Kind kind, const ModuleString& in, Mod
   if (table.empty() || n == 0) return false;
   ContextTables ctx_tables;
   if (table.has_context) ctx_tables.build(in, g.ignored, table.has_left, table.has_right);
-  Pass pass{g, table, in, table.has_context ? &ctx_tables : nullptr, info, {}, {}, {}, {}};
-  pass.choice.resize(n);
+  check_successor_arity(g);
+  Pass pass{g,
+            table,
+            in,
+            table.has_context ? &ctx_tables : nullptr,
+            info,
+            {},
+            {},
+            stream_prefix(info.seed, info.key),
+            Successors(g),
+            {},
+            {},
+            {},
+            {}};
+  pass.plans = plan_symbols(g, table, pass.weights);
+  PassScratch own;
+  PassScratch& scratch = info.scratch ? *info.scratch : own;
+  pass.choices = &scratch.choices;
 
   const std::size_t nchunks = (n + kChunk - 1) / kChunk;
+  if (scratch.choices.size() < nchunks) scratch.choices.resize(nchunks);
   pass.mods.assign(nchunks + 1, 0);
   pass.pars.assign(nchunks + 1, 0);
   pass.hits.assign(nchunks, 0);
@@ -297,13 +434,29 @@ bool apply_pass(const ir::Grammar& g, ir::Kind kind, const ModuleString& in, Mod
     pass.pars[c + 1] += pass.pars[c];
   }
   const std::uint64_t total = pass.mods[nchunks], total_params = pass.pars[nchunks];
+  std::size_t choice_bytes = 0;
+  for (std::size_t c = 0; c < nchunks; ++c) choice_bytes += scratch.choices[c].capacity() * 4;
   const std::size_t working =
-      in.bytes() + n * 4 + ctx_tables.bytes() + (origins ? (n + total) * 4 : 0);
+      in.bytes() + choice_bytes + ctx_tables.bytes() + (origins ? (n + total) * 4 : 0);
   check_limits(info, total, total_params, working);
 
   std::vector<std::uint32_t> new_origins;
   try {
     out.clear();
+    if (info.scratch && (out.capacity() < total || out.params_capacity() < total_params)) {
+      // derive()'s two strings take turns as output: with room for two more passes that grow
+      // the string as much as this one did (at least 4 x this output, at most 16 x), a buffer
+      // serves again two passes later and only its new part is paged in (a string that doubles
+      // per step then pages in 1.5 x its final size instead of 2 x). Untouched room costs
+      // address space only; where that is short, the exact size is taken.
+      const double growth = double(total) / double(n);
+      const double room = std::clamp(growth * growth * 1.05, 4.0, 16.0);
+      try {
+        out.reserve(std::size_t(room * double(total)), std::size_t(room * double(total_params)));
+      } catch (const std::bad_alloc&) {
+      } catch (const std::length_error&) {
+      }
+    }
     out.resize_for_fill(total, total_params);
     if (origins) new_origins.resize(total);
   } catch (const std::bad_alloc&) {
@@ -349,7 +502,11 @@ void check_branches(const ir::Grammar& g, const ModuleString& s, ir::Kind kind,
 ModuleString axiom_string(const ir::Grammar& g) {
   ModuleString s;
   for (const ir::SuccModule& m : g.axiom) {
-    double p[ir::kMaxSlots];
+    if (m.nargs > kMaxModuleParams) {
+      throw DeriveError("the axiom holds a module with " + std::to_string(m.nargs) +
+                        " parameters; a module holds at most " + std::to_string(kMaxModuleParams));
+    }
+    double p[kMaxModuleParams];
     for (std::uint32_t a = 0; a < m.nargs; ++a) {
       LazyRng rng(g.settings.seed, 0, 0);
       p[a] = eval(g, g.args[m.arg_begin + a], nullptr, rng);
@@ -400,6 +557,8 @@ ModuleString derive(const ir::Grammar& g, const DeriveOptions& options, DeriveSt
   info.max_bytes = options.max_bytes;
   info.threads = options.threads;
   info.peak_bytes = &peak;
+  PassScratch scratch;
+  info.scratch = &scratch;
 
   ModuleString s = axiom_string(g), next;
   if (s.size() > options.max_modules) throw DeriveError("the axiom is longer than --max-modules");

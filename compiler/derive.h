@@ -46,6 +46,12 @@ ModuleString axiom_string(const ir::Grammar& g);
 ModuleString derive(const ir::Grammar& g, const DeriveOptions& options,
                     DeriveStats* stats = nullptr);
 
+// Buffers one pass leaves to the next (derive() keeps one for all its passes): the choices of
+// each chunk's modules that were not decided by their symbol alone, in module order.
+struct PassScratch {
+  std::vector<std::vector<std::uint32_t>> choices;
+};
+
 // What one pass needs to know besides the table.
 struct PassInfo {
   std::uint64_t seed = 0;
@@ -55,6 +61,7 @@ struct PassInfo {
   std::uint64_t max_bytes = 0;
   int threads = 0;
   std::size_t* peak_bytes = nullptr;
+  PassScratch* scratch = nullptr;  // null: the pass uses buffers of its own
 };
 
 // Applies table `kind` once to `in`, writing `out`. Returns false (and leaves `out` alone) when

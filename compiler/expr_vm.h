@@ -20,21 +20,34 @@ struct ExprError : std::runtime_error {
   ir::CodeId code;
 };
 
+// Rng::stream(seed, a, b) (core/rng.h) in two halves, for the many streams of a derivation pass
+// that share seed and a: the prefix is hashed once per pass, each module's stream then costs two
+// mixes instead of four. tests/compiler/test_stochastic.cpp checks it equals Rng::stream.
+constexpr std::uint64_t stream_prefix(std::uint64_t seed, std::uint64_t a) {
+  return mix64(seed ^ 0x5851f42d4c957f2dULL) ^ mix64(a + 0x9e3779b97f4a7c15ULL);
+}
+constexpr Rng stream_from_prefix(std::uint64_t prefix, std::uint64_t b) {
+  return Rng(mix64(prefix ^ mix64(b + 0x632be59bd9b4e019ULL) * 3));
+}
+
 // A module's random stream, created on first use: most modules never draw, and keying a stream
 // costs a few hashes (docs/language.md, Randomness).
 class LazyRng {
  public:
-  LazyRng(std::uint64_t seed, std::uint64_t a, std::uint64_t b) : seed_(seed), a_(a), b_(b) {}
+  LazyRng(std::uint64_t seed, std::uint64_t a, std::uint64_t b)
+      : prefix_(stream_prefix(seed, a)), b_(b) {}
+  // prefix: stream_prefix(seed, a), hashed once per pass.
+  LazyRng(std::uint64_t prefix, std::uint64_t b) : prefix_(prefix), b_(b) {}
   Rng& get() {
     if (!ready_) {
-      rng_ = Rng::stream(seed_, a_, b_);
+      rng_ = stream_from_prefix(prefix_, b_);
       ready_ = true;
     }
     return rng_;
   }
 
  private:
-  std::uint64_t seed_, a_, b_;
+  std::uint64_t prefix_, b_;
   bool ready_ = false;
   Rng rng_;
 };

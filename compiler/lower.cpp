@@ -250,6 +250,12 @@ class Lowerer {
                               std::vector<ir::SuccModule>& out) {
     std::uint32_t nparams = 0;
     for (const ast::ModuleCall& call : seq) {
+      if (call.args.size() > ir::kMaxSlots) {  // the derived string's limit (module_string.h)
+        error(DiagCode::ModuleArityMismatch, call.span,
+              "module `" + call.name + "` with " + std::to_string(call.args.size()) +
+                  " arguments: a module takes at most 64");
+        continue;
+      }
       std::vector<std::string> parts = split(call.name);
       for (std::size_t k = 0; k < parts.size(); ++k) {
         const bool last = k + 1 == parts.size();

@@ -2,10 +2,69 @@
 
 #include <cctype>
 #include <charconv>
+#include <cstdlib>
+#include <mutex>
+#include <new>
 
 #include "core/number_text.h"
 
 namespace ramus {
+
+namespace {
+
+// The kept mid-size buffers: at most kKept, each a power of two in [kMidBuffer, kLargeBuffer),
+// so at most 16 MB stay with the process. A global, so they stay reachable (no leak reported).
+constexpr int kKept = 8;
+struct Kept {
+  void* p = nullptr;
+  std::size_t bytes = 0;
+};
+std::mutex kept_mutex;
+Kept kept[kKept];
+
+std::size_t size_class(std::size_t bytes) {
+  std::size_t c = kMidBuffer;
+  while (c < bytes) c *= 2;
+  return c;
+}
+
+}  // namespace
+
+void* allocate_buffer(std::size_t bytes) {
+  if (bytes < kLargeBuffer) {
+    const std::size_t c = size_class(bytes);
+    {
+      std::lock_guard<std::mutex> lock(kept_mutex);
+      for (Kept& k : kept) {
+        if (k.p && k.bytes == c) {
+          void* p = k.p;
+          k.p = nullptr;
+          return p;
+        }
+      }
+    }
+    void* p = std::malloc(c);
+    if (!p) throw std::bad_alloc();
+    return p;
+  }
+  void* p = std::malloc(bytes);
+  if (!p) throw std::bad_alloc();
+  return p;
+}
+
+void free_buffer(void* p, std::size_t bytes) noexcept {
+  if (bytes < kLargeBuffer) {
+    const std::size_t c = size_class(bytes);
+    std::lock_guard<std::mutex> lock(kept_mutex);
+    for (Kept& k : kept) {
+      if (!k.p) {
+        k = {p, c};
+        return;
+      }
+    }
+  }
+  std::free(p);
+}
 
 namespace {
 bool is_word(const std::string& name) {

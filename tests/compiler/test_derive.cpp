@@ -151,3 +151,39 @@ TEST_CASE("derive: a constant division by zero is reported at lowering", "[deriv
 TEST_CASE("derive: zero steps give the axiom", "[derive]") {
   CHECK(derive_text("lsystem z { axiom F(1) [ + A(0.5) ]; A(x) -> B; }", 0) == "F(1)[+A(0.5)]");
 }
+
+// A symbol whose first production has no context and no guard is decided by its symbol alone
+// (derive.cpp, SymbolPlan): the same grammar with a guard that always holds goes through
+// matching instead and must give the same string, draws included, on one thread and on two,
+// over several chunks.
+TEST_CASE("derive: productions decided by their symbol give what matching gives", "[derive]") {
+  auto grammar = [](const std::string& guard_a, const std::string& guard_b) {
+    return "lsystem t { seed 5; axiom A(1) B(2);\n"
+           "  A(x)" +
+           guard_a +
+           " -> (0.3) F(x) [ + A(x / 2) ] A(x * uniform(0.9, 1.1))\n"
+           "        | (0.7) F(x / 2) A(x / 2) B(x);\n"
+           "  B(y)" +
+           guard_b + " -> B(y + 1) [ - A(y / 3) ] F(y / 3); }";
+  };
+  ir::Grammar planned = grammar_of(grammar("", "")),
+              matched = grammar_of(grammar(" : x == x", " : y == y"));
+  const int steps = 14;
+  const ModuleString a = derive_of(planned, steps, 1), b = derive_of(matched, steps, 1);
+  REQUIRE(a.size() > 3 * 32768);  // several chunks
+  CHECK(a == b);
+  CHECK(derive_of(planned, steps, 2) == a);
+  CHECK(derive_of(matched, steps, 2) == a);
+}
+
+TEST_CASE("derive: an argument written twice is the same value, a random one is drawn twice",
+          "[derive][expr]") {
+  ir::Grammar g = grammar_of(
+      "lsystem t { seed 3; axiom A(3); A(s) -> B(s / 7) B(s / 7) C(uniform(0, 1)) C(uniform(0, "
+      "1)); }");
+  const ModuleString s = derive_of(g, 1);
+  REQUIRE(s.size() == 4);
+  CHECK(s.param(0, 0) == 3.0 / 7);
+  CHECK(s.param(1, 0) == s.param(0, 0));
+  CHECK(s.param(2, 0) != s.param(3, 0));
+}

@@ -87,3 +87,14 @@ lsystem t {
       "  -> F({load $0})\n";
   CHECK(ir::dump(g) == expected);
 }
+
+TEST_CASE("lower: a module takes at most 64 arguments", "[lower]") {
+  auto with_args = [](int n) {
+    std::string args;
+    for (int k = 0; k < n; ++k) args += (k ? ", " : "") + std::to_string(k);
+    return "lsystem m { axiom A; A -> B(" + args + "); }";
+  };
+  CHECK_NOTHROW(grammar_of(with_args(64)));
+  CHECK_THROWS_WITH(grammar_of(with_args(65)),
+                    Catch::Contains("65 arguments") && Catch::Contains("at most 64"));
+}

@@ -3,6 +3,7 @@
 #include <catch2/catch.hpp>
 #include <map>
 
+#include "compiler/expr_vm.h"
 #include "engine_helpers.h"
 
 using namespace ramus;
@@ -81,4 +82,17 @@ TEST_CASE("stochastic: uniform and normal draw from the module's stream", "[stoc
     CHECK(s1.param(i, 0) < 4);
   }
   CHECK(s1.param(0, 0) != s1.param(2, 0));  // positions draw from different streams
+}
+
+TEST_CASE("stochastic: a pass's hashed stream prefix gives Rng::stream", "[stochastic]") {
+  for (std::uint64_t seed : {0ull, 7ull, ~0ull}) {
+    for (std::uint64_t key : {0ull, 512ull, 512ull * 9 + 3}) {
+      const std::uint64_t prefix = stream_prefix(seed, key);
+      for (std::uint64_t b : {0ull, 1ull, 123457ull}) {
+        Rng x = stream_from_prefix(prefix, b), y = Rng::stream(seed, key, b);
+        CHECK(x.next_u64() == y.next_u64());
+        CHECK(x.next_u64() == y.next_u64());
+      }
+    }
+  }
 }
