@@ -15,6 +15,7 @@
 #include "compiler/turtle.h"
 #include "core/skeleton.h"
 #include "formats/rmb/rmb_codec.h"
+#include "runtime/c_api_guard.h"
 
 struct ramus_grammar {
   ramus::ir::Grammar g;
@@ -26,28 +27,7 @@ struct ramus_skeleton {
 
 namespace {
 
-void set_error(char* err, std::size_t errlen, const char* message) {
-  if (!err || errlen == 0) return;
-  const std::size_t n = std::min(std::strlen(message), errlen - 1);
-  std::memcpy(err, message, n);
-  err[n] = '\0';
-}
-
-// Runs f(), turning any exception into `fallback` and a message.
-template <typename T, typename F>
-T guarded(char* err, std::size_t errlen, T fallback, F&& f) {
-  set_error(err, errlen, "");
-  try {
-    return f();
-  } catch (const std::bad_alloc&) {
-    set_error(err, errlen, "out of memory");
-  } catch (const std::exception& e) {
-    set_error(err, errlen, e.what());
-  } catch (...) {
-    set_error(err, errlen, "unknown error");
-  }
-  return fallback;
-}
+using ramus::runtime::guarded;
 
 // Mirrors grow_file (compiler/grow.cpp): the seed replaces the grammar's, as lowering with a
 // seed override does, so the axiom's arguments and every pass draw from the same streams.

@@ -14,7 +14,7 @@
 
 #include "backends/mesh/gltf_accessors.h"
 #include "backends/mesh/mesh_reader.h"
-#include "backends/mesh/up_axis.h"
+#include "core/up_axis.h"
 
 namespace ramus::mesh {
 namespace {

@@ -16,7 +16,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "backends/mesh/up_axis.h"
+#include "core/up_axis.h"
 
 namespace ramus::mesh {
 namespace {

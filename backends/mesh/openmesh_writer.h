@@ -11,7 +11,7 @@
 #include <string>
 
 #include "backends/mesh/tree_mesh.h"
-#include "backends/mesh/up_axis.h"
+#include "core/up_axis.h"
 
 namespace ramus::mesh {
 

@@ -8,7 +8,7 @@
 #include <map>
 #include <set>
 
-#include "backends/mesh/up_axis.h"
+#include "core/up_axis.h"
 #include "backends/pieces/gltf_pieces.h"
 #include "backends/pieces/output_layout.h"
 #include "backends/pieces/output_posed_mesh.h"
