@@ -182,8 +182,12 @@ void write_rmb_piece_stream(Writer& w, const RmbPieceStream& s) {
   w.varint(s.tiles_per_type[0]);
   w.varint(s.tiles_per_type[1]);
   for (const Quat& q : s.twists) {
-    check(trs_ok(Trs{{0, 0, 0}, q, 1.0}), "a twist rotation that is not finite");
-    for (double v : {q.w, q.x, q.y, q.z}) w.f64(v);
+    // A twist turns about the rim axis z: x and y are zero and not stored.
+    check(q.x == 0 && q.y == 0 && !std::signbit(q.x) && !std::signbit(q.y) &&
+              trs_ok(Trs{{0, 0, 0}, q, 1.0}),
+          "a twist rotation that is not a finite rotation about z");
+    w.f64(q.w);
+    w.f64(q.z);
   }
   check(!s.types.empty() && s.types.size() <= kRmbMaxStreamTypes, "1..4096 piece types");
   w.varint(s.types.size());
@@ -241,8 +245,6 @@ RmbPieceStream read_rmb_piece_stream(Reader& r) {
   for (Quat& q : s.twists) {
     const std::size_t at = r.pos();
     q.w = r.f64("twist rw");
-    q.x = r.f64("twist rx");
-    q.y = r.f64("twist ry");
     q.z = r.f64("twist rz");
     if (!trs_ok(Trs{{0, 0, 0}, q, 1.0})) r.fail_at(at, "expected a finite twist rotation");
   }

@@ -89,7 +89,8 @@ struct RmbPlacedTree {
 struct RmbPieceStream {
   std::string set;  // the piece set's name
   std::array<std::uint16_t, 2> tiles_per_type{4, 2};
-  std::array<Quat, kRmbTwists> twists{};  // rotation of each twist, as the back end computed it
+  // The rotation of each twist about the rim axis z, as the back end computed it (x = y = 0).
+  std::array<Quat, kRmbTwists> twists{};
   std::vector<RmbStreamType> types;
   std::vector<RmbPlacedTree> trees;
   bool empty() const { return trees.empty(); }
