@@ -3,7 +3,10 @@
 // pieces encoding (canonical glTF, --flatten, --gpu-instancing, the instance buffer), then meshes
 // the same trees with the mesh back end (build_tree_mesh on a skeleton through the trees' joints)
 // and encodes that as .glb. Prints pieces per second and bytes per instance (placed piece) for
-// every encoding; all encoding happens in memory.
+// every encoding; all encoding happens in memory. The placed-pieces stream of an .rmb (section
+// 12) is measured beside the instance buffer it expands to: the whole section, its tree records
+// alone (what a piece costs once the set's header is there) and a pieces-only .rmb compressed
+// with zstd; every tree's expansion is checked to equal its instance buffer byte for byte.
 //   bench_pieces [TREES] [SEED]
 #include <chrono>
 #include <cstdio>
@@ -16,42 +19,17 @@
 #include "backends/pieces/gltf_pieces.h"
 #include "backends/pieces/output_instance_buffer.h"
 #include "backends/pieces/output_layout.h"
+#include "backends/pieces/output_piece_stream.h"
 #include "backends/pieces/pieces.h"
+#include "bench/bench_pieces_trees.h"
 #include "core/rng.h"
-#include "grammar/check.h"
-#include "grammar/loader.h"
+#include "formats/rmb/rmb_codec.h"
+#include "formats/rmb/rmb_piece_stream_expand.h"
 
 using namespace ramus;
 using namespace ramus::pieces;
 
 namespace {
-
-const char* kBenchSet = R"(
-pieces bench {
-  rim hexagon(radius: 0.3);
-  piece I = tube(length: 2, taper: 0.97);
-  piece Y = fork(length: 2, angle: 30, taper: 0.92);
-  root I;
-  I.top -> I 0.6 | Y 0.4;
-  Y.left -> I 0.7 | Y 0.3;
-  Y.right -> I 0.7 | Y 0.3;
-  twist any;
-  depth 200;
-}
-)";
-
-PieceSet lower_bench_set() {
-  SourceManager sources;
-  DiagnosticSink diags;
-  const Program program = load_program_text("bench.ramus", kBenchSet, sources, diags);
-  check_program(program, sources, diags);
-  PieceSet set = lower_pieces(program, sources, {}, diags);
-  if (diags.has_errors()) {
-    std::fprintf(stderr, "bench_pieces: the bench piece set does not lower\n");
-    std::exit(1);
-  }
-  return set;
-}
 
 // The same tree as a skeleton for the mesh back end: one node at the tree's root joint and one
 // at every terminal joint, radius the rim radius scaled like the joint.
@@ -86,7 +64,7 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 int main(int argc, char** argv) {
   const std::size_t trees = argc > 1 ? std::strtoull(argv[1], nullptr, 10) : 1000;
   const std::uint64_t seed = argc > 2 ? std::strtoull(argv[2], nullptr, 10) : 1;
-  const PieceSet set = lower_bench_set();
+  const PieceSet set = bench::lower_bench_piece_set();
   Rng rng(seed);
 
   struct Encoding {
@@ -94,18 +72,16 @@ int main(int argc, char** argv) {
     double seconds = 0;
     std::size_t bytes = 0;
   };
-  std::vector<Encoding> enc = {{"canonical .glb"},
-                               {"--flatten .glb"},
-                               {"--gpu-instancing .glb"},
-                               {"instance buffer .bin"},
-                               {"mesh back end .glb"}};
+  std::vector<Encoding> enc = {
+      {"canonical .glb"},          {"--flatten .glb"},
+      {"--gpu-instancing .glb"},   {"instance buffer .bin"},
+      {"mesh back end .glb"},      {"placed-pieces stream (.rmb section 12)"},
+      {"  its tree records only"}, {"  whole .rmb with zstd"}};
   double assemble_s = 0, mesh_build_s = 0;
   std::size_t pieces = 0, bones = 0, mesh_triangles = 0, piece_triangles = 0;
   std::size_t min_pieces = SIZE_MAX, max_pieces = 0;
   for (std::size_t k = 0; k < trees; ++k) {
-    AssembleOptions ao;
-    ao.seed = seed * 1000003 + k;
-    ao.max_pieces = std::uint32_t(200 + rng.below(1801));
+    const AssembleOptions ao = bench::bench_tree_options(rng, seed, k);
     auto t0 = std::chrono::steady_clock::now();
     Forest f;
     f.trees.push_back(assemble(set, ao));
@@ -131,6 +107,23 @@ int main(int argc, char** argv) {
     const InstanceBufferBytes ib = encode_instance_buffer(set, f, "tree.bin", "tree.glb");
     enc[3].seconds += seconds_since(t0);
     enc[3].bytes += ib.binary.size() + ib.manifest.size();
+    // The placed-pieces stream of the same tree: the whole section (set header with the piece
+    // types, then the tree), its tree records alone, and a pieces-only .rmb with it compressed.
+    t0 = std::chrono::steady_clock::now();
+    const std::uint64_t tile_seed[] = {ao.seed};
+    const RmbPieceStream stream = encode_piece_stream(set, f, tile_seed);
+    rmb::Writer w;
+    write_rmb_piece_stream(w, stream);
+    enc[5].seconds += seconds_since(t0);
+    enc[5].bytes += w.size();
+    enc[6].bytes += rmb_piece_stream_tree_bytes(stream);
+    RmbEncodeOptions zo;
+    zo.zstd = true;
+    enc[7].bytes += encode_rmb(ir::make_grammar(""), {}, {}, stream, zo).size();
+    if (expand_piece_stream_binary(stream) != ib.binary) {
+      std::fprintf(stderr, "bench_pieces: tree %zu: the stream's expansion differs\n", k);
+      return 1;
+    }
     t0 = std::chrono::steady_clock::now();
     const Skeleton s = tree_skeleton(set, tree);
     mesh::MeshOptions mo;
@@ -155,6 +148,11 @@ int main(int argc, char** argv) {
   std::printf("|---|---|---|---|---|---|\n");
   for (std::size_t e = 0; e < enc.size(); ++e) {
     const double total = enc[e].seconds + (e == 4 ? mesh_build_s : assemble_s);
+    if (e > 5) {  // parts of the stream's bytes, not encodings of their own
+      std::printf("| %s | | | %zu | %.2f | %.0f |\n", enc[e].name, enc[e].bytes,
+                  double(enc[e].bytes) / double(pieces), double(enc[e].bytes) / double(trees));
+      continue;
+    }
     std::printf("| %s | %.3f | %.0f | %zu | %.1f | %.0f |\n", enc[e].name, enc[e].seconds,
                 double(pieces) / total, enc[e].bytes, double(enc[e].bytes) / double(pieces),
                 double(enc[e].bytes) / double(trees));

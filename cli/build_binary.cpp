@@ -4,6 +4,7 @@
 #include <filesystem>
 
 #include "backends/pieces/pieces.h"
+#include "cli/build_pieces.h"
 #include "cli/grow_args.h"
 #include "cli/read_file.h"
 #include "core/atomic_file.h"
@@ -25,6 +26,9 @@ void add_binary_build_options(CLI::App* sub, BinaryBuildArgs& args) {
   sub->add_option("--rmb-version", args.version,
                   "--target binary: the format version to write (default 2; 1 for older readers)")
       ->check(CLI::Range(1, 2));
+  sub->add_flag("--placed-pieces", args.placed_pieces,
+                "--target binary: also store the tree the pieces block builds (--pieces, "
+                "--poses, --seed) as placed pieces the runtime expands to the instance buffer");
   sub->add_flag("--mesh-paths", args.mesh_paths,
                 "--target binary: store mesh(\"file\") pieces as their paths instead of "
                 "embedding the files");
@@ -57,6 +61,22 @@ std::optional<bool> check_pieces_only(const Program& program, const SourceManage
   return !diags.has_errors();
 }
 
+// The placed-pieces stream --placed-pieces asks for: the same forest `--target pieces` builds
+// with these arguments. --pieces and --poses say which tree, so without the flag they are
+// mistakes.
+std::optional<RmbPieceStream> placed_stream(const GrowArgs& a, const BinaryBuildArgs& binary,
+                                            const PiecesBuildArgs& pieces) {
+  if (!binary.placed_pieces) {
+    if (!pieces.block.empty())
+      throw UserError("--pieces with --target binary needs --placed-pieces");
+    if (pieces.poses != 1) throw UserError("--poses with --target binary needs --placed-pieces");
+    return RmbPieceStream{};
+  }
+  std::optional<GrownPieces> grown = grow_pieces(a, pieces);
+  if (!grown) return std::nullopt;
+  return std::move(grown->stream);
+}
+
 RmbEncodeOptions encode_options(const BinaryBuildArgs& binary) {
   RmbEncodeOptions options;
   options.tolerance = binary.tolerance;
@@ -77,8 +97,8 @@ void report(const std::string& output, const std::string& bytes, const ir::Gramm
 // An .rmb in, an .rmb out: everything it holds (lsystem, piece sets, voxel tables) re-encoded
 // with this build's options (--zstd, --strip, --tolerance, --rmb-version), -n and --seed stored
 // as the new defaults.
-int rebuild_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::string& output,
-                   bool quiet) {
+int rebuild_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const PiecesBuildArgs& pieces,
+                   const std::string& output, bool quiet) {
   if (!a.defines.empty()) {
     throw UserError("-D/--define needs the grammar's source; " + a.file +
                     " is a compiled binary grammar");
@@ -88,12 +108,16 @@ int rebuild_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::
     throw UserError("--mesh-paths applies to a grammar's mesh files; " + a.file +
                     " already holds its pieces as compiled");
   }
+  // Without --placed-pieces, the stream the file holds (if any) goes along unchanged.
+  const std::optional<RmbPieceStream> placed = placed_stream(a, binary, pieces);
+  if (!placed) return 1;
   std::string bytes;
   try {
     RmbContents c = decode_rmb_contents(read_file_bytes(a.file));
     if (a.steps) c.grammar.settings.derive = *a.steps;
     if (a.seed) c.grammar.settings.seed = *a.seed;
-    bytes = encode_rmb(c.grammar, c.voxels, c.pieces, encode_options(binary));
+    if (binary.placed_pieces) c.placed = *placed;
+    bytes = encode_rmb(c.grammar, c.voxels, c.pieces, c.placed, encode_options(binary));
     write_file_atomically(output, bytes);
     report(output, bytes, c.grammar, c.pieces.sets.size(), quiet);
   } catch (const RmbError& e) {
@@ -104,12 +128,14 @@ int rebuild_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::
 
 }  // namespace
 
-int build_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::string& output,
-                 bool quiet) {
+int build_binary(const GrowArgs& a, const BinaryBuildArgs& binary,
+                 const PiecesBuildArgs& pieces_args, const std::string& output, bool quiet) {
   if (std::filesystem::path(output).extension() != ".rmb") {
     throw UserError("--target binary writes an .rmb file, not " + output);
   }
-  if (is_binary_grammar(a.file)) return rebuild_binary(a, binary, output, quiet);
+  if (is_binary_grammar(a.file)) return rebuild_binary(a, binary, pieces_args, output, quiet);
+  const std::optional<RmbPieceStream> placed = placed_stream(a, binary, pieces_args);
+  if (!placed) return 1;
   SourceManager sm;
   DiagnosticSink diags;
   const Program program = load_program(a.file, sm, diags);
@@ -155,7 +181,7 @@ int build_binary(const GrowArgs& a, const BinaryBuildArgs& binary, const std::st
       voxels = voxel_tables_of(program.files[0], g);
       pieces = piece_sets_of(program, a.file, pieces_options);
     }
-    bytes = encode_rmb(g, voxels, pieces, options);
+    bytes = encode_rmb(g, voxels, pieces, *placed, options);
   } catch (const RmbError& e) {
     throw UserError(a.file + ": " + e.what());
   }

@@ -5,6 +5,7 @@
 #include <optional>
 #include <string>
 
+#include "cli/build_pieces.h"
 #include "cli/grow_args.h"
 
 namespace ramus::cli {
@@ -16,6 +17,7 @@ struct BinaryBuildArgs {
   bool strip = false;               // leave out source locations and production texts
   bool mesh_paths = false;          // keep mesh("file") pieces as paths, not embedded files
   int version = 2;                  // the .rmb format version to write
+  bool placed_pieces = false;       // also store the pieces tree as a placed-pieces stream
 };
 
 void add_binary_build_options(CLI::App* sub, BinaryBuildArgs& args);
@@ -24,7 +26,9 @@ void add_binary_build_options(CLI::App* sub, BinaryBuildArgs& args);
 // writes its .rmb, with the root file's `pieces` blocks (section 10) and `voxels` blocks
 // (section 11). A file with pieces blocks and no lsystem block gives an .rmb whose grammar is
 // empty and unnamed. Returns the exit code: 1 after printing the grammar's diagnostics.
-int build_binary(const GrowArgs& args, const BinaryBuildArgs& binary, const std::string& output,
-                 bool quiet);
+// With --placed-pieces, also the tree the pieces block assembles (or fits), --pieces and --poses
+// as for --target pieces, as a placed-pieces stream (section 12).
+int build_binary(const GrowArgs& args, const BinaryBuildArgs& binary, const PiecesBuildArgs& pieces,
+                 const std::string& output, bool quiet);
 
 }  // namespace ramus::cli

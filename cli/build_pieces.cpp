@@ -10,6 +10,7 @@
 #include "backends/pieces/gltf_pieces.h"
 #include "backends/pieces/output_instance_buffer.h"
 #include "backends/pieces/output_layout.h"
+#include "backends/pieces/output_piece_stream.h"
 #include "backends/pieces/output_posed_mesh.h"
 #include "backends/pieces/pieces.h"
 #include "backends/preview/preview.h"
@@ -31,7 +32,7 @@ double row_spacing(const pieces::PieceSet& set, const pieces::Tree& tree) {
   one.trees.push_back(tree);
   const pieces::PiecesLayout layout = pieces::layout_forest(set, one);
   double lo = 0, hi = 0;
-  for (const pieces::Trs& w : layout.bone_world) {
+  for (const Trs& w : layout.bone_world) {
     lo = std::min({lo, w.t.x, w.t.y});
     hi = std::max({hi, w.t.x, w.t.y});
   }
@@ -93,16 +94,7 @@ void add_pieces_build_options(CLI::App* sub, PiecesBuildArgs& a) {
       ->group(group);
 }
 
-int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::string& output,
-                 bool quiet) {
-  const std::string ext = std::filesystem::path(output).extension().string();
-  if (ext != ".glb" && ext != ".gltf") {
-    throw UserError("--target pieces writes a .glb or .gltf file, not " + output);
-  }
-  if (!a.preview.empty()) {
-    const std::string pe = std::filesystem::path(a.preview).extension().string();
-    if (pe != ".png" && pe != ".svg") throw UserError("--preview must end in .png or .svg");
-  }
+std::optional<GrownPieces> grow_pieces(const GrowArgs& grow, const PiecesBuildArgs& a) {
   // An .rmb holds the pieces blocks with their numbers folded (-D is refused) and the lsystem a
   // block without attach rules is fitted to; the source is loaded and checked.
   const bool binary = is_binary_grammar(grow.file);
@@ -119,43 +111,70 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
   if (!diags.has_errors()) check_program(program, sources, diags, check_options);
   if (diags.has_errors()) {
     print_diagnostics(sources, diags);
-    return 1;
+    return std::nullopt;
   }
   const std::uint64_t seed = grow.seed.value_or(1);
-  pieces::PieceSet set;
-  pieces::Tree tree;
+  GrownPieces out;
   try {
-    set = pieces::lower_pieces(program, sources, lo, diags);
+    out.set = pieces::lower_pieces(program, sources, lo, diags);
     if (diags.has_errors()) {
       print_diagnostics(sources, diags);
-      return 1;
+      return std::nullopt;
     }
+    pieces::Tree tree;
     if (pieces::pieces_block_fits_skeleton(program, a.block)) {
       std::optional<Skeleton> skeleton =
           binary ? grow_for_cli(grow) : grow_named_skeleton(program, grow, a.block, sources, diags);
-      if (!skeleton) return 1;
+      if (!skeleton) return std::nullopt;
       pieces::FitOptions fo;
       fo.seed = seed;
-      tree = pieces::fit_skeleton(set, *skeleton, fo);
+      tree = pieces::fit_skeleton(out.set, *skeleton, fo);
     } else {
       pieces::AssembleOptions ao;
       ao.seed = seed;
-      tree = pieces::assemble(set, ao);
+      tree = pieces::assemble(out.set, ao);
     }
     print_diagnostics(sources, diags);
+    out.forest = pieces::pose_copies(out.set, tree, a.poses, seed, row_spacing(out.set, tree));
+    // Copy k's tiles are drawn with seed + k (pose_copies); every output shows the poses as the
+    // placed-pieces stream stores them (backends/pieces/output_piece_stream.h).
+    std::vector<std::uint64_t> tile_seeds;
+    for (std::size_t k = 0; k < out.forest.trees.size(); ++k) tile_seeds.push_back(seed + k);
+    out.stream = pieces::quantize_forest_poses(out.set, out.forest, tile_seeds);
+  } catch (const pieces::PiecesError& e) {
+    print_diagnostics(sources, diags);
+    throw UserError(e.what());
+  }
+  return out;
+}
+
+int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::string& output,
+                 bool quiet) {
+  const std::string ext = std::filesystem::path(output).extension().string();
+  if (ext != ".glb" && ext != ".gltf") {
+    throw UserError("--target pieces writes a .glb or .gltf file, not " + output);
+  }
+  if (!a.preview.empty()) {
+    const std::string pe = std::filesystem::path(a.preview).extension().string();
+    if (pe != ".png" && pe != ".svg") throw UserError("--preview must end in .png or .svg");
+  }
+  std::optional<GrownPieces> grown = grow_pieces(grow, a);
+  if (!grown) return 1;
+  const pieces::PieceSet& set = grown->set;
+  const pieces::Forest& forest = grown->forest;
+  try {
     if (a.lod < 0 || std::size_t(a.lod) >= set.lod_segments.size()) {
       throw UserError("--lod " + std::to_string(a.lod) + ": the pieces are built at " +
                       std::to_string(set.lod_segments.size()) + " levels (0.." +
                       std::to_string(set.lod_segments.size() - 1) + ")");
     }
-    const pieces::Forest forest =
-        pieces::pose_copies(set, tree, a.poses, seed, row_spacing(set, tree));
     pieces::PiecesGltfOptions go;
     go.encoding = a.flatten          ? pieces::GltfEncoding::kFlatten
                   : a.gpu_instancing ? pieces::GltfEncoding::kGpuInstancing
                                      : pieces::GltfEncoding::kCanonical;
     go.lod = std::size_t(a.lod);
     go.wind = a.wind;
+    const std::uint64_t seed = grow.seed.value_or(1);
     go.wind_options.seed = seed;
     go.seed = seed;
     if (!a.bark.empty()) {
@@ -195,7 +214,6 @@ int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& a, const std::stri
       if (!a.preview.empty()) std::fprintf(stderr, "ramus: wrote %s\n", a.preview.c_str());
     }
   } catch (const pieces::PiecesError& e) {
-    print_diagnostics(sources, diags);
     throw UserError(e.what());
   } catch (const mesh::MeshError& e) {
     throw UserError(e.what());

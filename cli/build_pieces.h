@@ -3,9 +3,12 @@
 // block assembled into skinned piece instances (docs/pieces.md) instead of grown into a mesh.
 #pragma once
 
+#include <optional>
 #include <string>
 
+#include "backends/pieces/pieces.h"
 #include "cli/grow_args.h"
+#include "formats/rmb/rmb_piece_stream.h"
 
 namespace ramus::cli {
 
@@ -31,5 +34,16 @@ void add_pieces_build_options(CLI::App* sub, PiecesBuildArgs& args);
 // the grammar's diagnostics.
 int build_pieces(const GrowArgs& grow, const PiecesBuildArgs& args, const std::string& output,
                  bool quiet);
+
+// What build_pieces writes: the lowered set, the forest (with the poses the placed-pieces
+// stream stores) and that stream. `ramus build --target binary --placed-pieces` stores the
+// stream, so its expansion equals the instance buffer of a pieces build with the same
+// arguments. nullopt after printing the grammar's diagnostics.
+struct GrownPieces {
+  pieces::PieceSet set;
+  pieces::Forest forest;
+  RmbPieceStream stream;
+};
+std::optional<GrownPieces> grow_pieces(const GrowArgs& grow, const PiecesBuildArgs& args);
 
 }  // namespace ramus::cli

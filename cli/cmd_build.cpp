@@ -61,8 +61,9 @@ const std::vector<std::string>& target_options(const std::string& target) {
   static const std::vector<std::string> pieces = {
       "--lod",     "--flatten", "--gpu-instancing", "--poses",     "--wind", "--instance-buffer",
       "--preview", "--pieces",  "--bark",           "--bark-edges"};
-  static const std::vector<std::string> binary = {"--tolerance", "--zstd", "--strip",
-                                                  "--rmb-version", "--mesh-paths"};
+  static const std::vector<std::string> binary = {
+      "--tolerance",  "--zstd",          "--strip",  "--rmb-version",
+      "--mesh-paths", "--placed-pieces", "--pieces", "--poses"};
   return target == "pieces" ? pieces : target == "binary" ? binary : mesh;
 }
 
@@ -141,7 +142,7 @@ texture::BarkTextures bark_textures_of(const BuildArgs& a) {
 int run_build(const BuildArgs& a, const GlobalOptions& global) {
   const std::string out_ext = extension(a.output);
   check_target_options(a, out_ext == ".glb" || out_ext == ".gltf");
-  if (a.target == "binary") return build_binary(a.grow, a.binary, a.output, global.quiet);
+  if (a.target == "binary") return build_binary(a.grow, a.binary, a.pieces, a.output, global.quiet);
   if (a.target == "pieces") {
     PiecesBuildArgs p = a.pieces;
     p.lod = a.lod;

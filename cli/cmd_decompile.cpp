@@ -57,6 +57,8 @@ int run_decompile(const DecompileArgs& a, bool quiet) {
   } catch (const DecompileError& e) {
     throw UserError(a.file + ": cannot decompile: " + e.what());
   }
+  const std::string left_out = decompile_left_out(contents);
+  if (!left_out.empty() && !quiet) std::fprintf(stderr, "ramus: note: %s\n", left_out.c_str());
   if (a.output.empty() || a.output == "-") {
     if (!contents.pieces.meshes.empty()) {
       throw UserError(a.file +

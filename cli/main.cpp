@@ -21,6 +21,11 @@ int main(int argc, char** argv) {
                  "refuse any input file (scan, grammar, skeleton, .rmb, manifest) larger than "
                  "this (bytes, or with K, M, G: 2G); default 64G")
       ->transform(CLI::AsSizeValue(false));
+  std::uint64_t max_points = ramus::kDefaultMaxInputPoints;
+  app.add_option("--max-points", max_points,
+                 "refuse a scan whose cloud would hold more points than this (after --thin); "
+                 "default 1000000000")
+      ->check(CLI::PositiveNumber);
 
   std::function<int()> run;
   for (const CommandSpec& spec : command_table()) spec.add(app, global, run);
@@ -32,6 +37,7 @@ int main(int argc, char** argv) {
     return code == 0 ? 0 : 2;
   }
   ramus::set_max_input_file_bytes(max_file_bytes);
+  ramus::set_max_input_points(max_points);
   try {
     check_output_paths();  // before any work: a missing output directory fails at once
     return run ? run() : 2;

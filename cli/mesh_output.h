@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "mesh/up_axis.h"
+#include "core/up_axis.h"
 #include "cli/command.h"
 
 namespace ramus::cli {

@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "mesh/up_axis.h"
+#include "core/up_axis.h"
 #include "core/skeleton.h"
 
 namespace ramus::cli {

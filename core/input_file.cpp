@@ -9,12 +9,17 @@ namespace ramus {
 namespace {
 
 std::atomic<std::uint64_t> g_max_input_file_bytes{kDefaultMaxInputFileBytes};
+std::atomic<std::uint64_t> g_max_input_points{kDefaultMaxInputPoints};
 
 }  // namespace
 
 std::uint64_t max_input_file_bytes() { return g_max_input_file_bytes.load(); }
 
 void set_max_input_file_bytes(std::uint64_t bytes) { g_max_input_file_bytes.store(bytes); }
+
+std::uint64_t max_input_points() { return g_max_input_points.load(); }
+
+void set_max_input_points(std::uint64_t points) { g_max_input_points.store(points); }
 
 std::string input_file_size_error(std::uint64_t bytes) {
   const std::uint64_t limit = max_input_file_bytes();

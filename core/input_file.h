@@ -1,4 +1,5 @@
-// Whole-file input with the one limit every reader shares: the largest file ramus will read.
+// Whole-file input with the limits every reader shares: the largest file ramus will read, and the
+// most points a scan reader keeps.
 //
 // Scans, grammars, skeletons, manifests and binary grammars come from anyone; a reader that
 // slurps a file must not be led into reading 500 GB because a path pointed at the wrong disk.
@@ -17,6 +18,13 @@ inline constexpr std::uint64_t kDefaultMaxInputFileBytes = std::uint64_t(64) << 
 
 std::uint64_t max_input_file_bytes();
 void set_max_input_file_bytes(std::uint64_t bytes);
+
+// The most points a scan reader keeps in a cloud (after --thin, when given): 10^9 points hold
+// 12 GB of positions alone, more than a workstation processes in one piece (tile it instead).
+inline constexpr std::uint64_t kDefaultMaxInputPoints = 1'000'000'000;
+
+std::uint64_t max_input_points();
+void set_max_input_points(std::uint64_t points);
 
 // The complaint about a file of `bytes` bytes when it is over the limit ("has N bytes, more than
 // the limit of M (--max-file-size)"), else "".

@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "mesh/tree_mesh.h"
-#include "mesh/up_axis.h"
+#include "core/up_axis.h"
 
 namespace ramus::mesh {
 

@@ -118,6 +118,49 @@ const uint32_t* ramus_mesh_skin_nodes(const ramus_mesh* m, int lod, int part);
 const uint32_t* ramus_mesh_indices(const ramus_mesh* m, int lod, int part);
 
 /* ==== end of the mesher ====================================================================== */
+/* ---- Placed pieces (runtime/ramus_runtime_pieces.cpp) -------------------------------------
+ * An .rmb built with `ramus build FILE --target binary --placed-pieces` carries trees of
+ * interlocking pieces as a compact stream (section 12, docs/binary-format.md): per piece its
+ * type, parent rim, twist and, where posed, quantized joint poses. ramus_pieces_expand turns it
+ * into the pieces instance buffer (docs/instance-buffer.md): the same bytes `ramus build FILE
+ * --target pieces --instance-buffer OUT.bin` writes for the same tree, and the same tables as
+ * arrays. The piece meshes themselves are in that build's glTF. */
+
+typedef struct ramus_pieces ramus_pieces;
+
+/* One instance record (16 bytes, the file's layout): draw call per piece type. */
+typedef struct ramus_piece_instance {
+  uint32_t bone_offset; /* global index of its root-joint bone */
+  uint32_t tile_offset; /* its first entry in ramus_pieces_tiles */
+  uint32_t tree;
+  uint16_t piece_type;
+  uint16_t joints; /* its bones: bone_offset .. bone_offset + joints - 1 */
+} ramus_piece_instance;
+
+/* Decodes and verifies an .rmb image and expands its placed pieces. NULL with a message (the
+ * byte offset and what was expected for a malformed stream) when the image is not a valid
+ * .rmb or holds no placed pieces. */
+ramus_pieces* ramus_pieces_expand(const void* rmb_bytes, size_t n, char* err, size_t errlen);
+void ramus_free_pieces(ramus_pieces* p);
+
+size_t ramus_pieces_type_count(const ramus_pieces* p);
+size_t ramus_pieces_tree_count(const ramus_pieces* p);
+size_t ramus_pieces_instance_count(const ramus_pieces* p);
+size_t ramus_pieces_bone_count(const ramus_pieces* p);
+size_t ramus_pieces_tile_count(const ramus_pieces* p);
+/* Piece type t's name (NUL-terminated, owned by p), or NULL when t is out of range. */
+const char* ramus_pieces_type_name(const ramus_pieces* p, size_t t);
+
+/* The tables, owned by p (NULL when empty): per piece type its first instance and instance
+ * count (2 values per type); instances sorted by piece type; per bone its skinning matrix, 16
+ * floats column-major, y up like the glTF; per instance tile slices (one per base quad). */
+const uint32_t* ramus_pieces_ranges(const ramus_pieces* p);
+const ramus_piece_instance* ramus_pieces_instances(const ramus_pieces* p);
+const float* ramus_pieces_bones(const ramus_pieces* p);
+const uint16_t* ramus_pieces_tiles(const ramus_pieces* p);
+
+/* The whole instance buffer file (little-endian), owned by p; its size in *size. */
+const void* ramus_pieces_instance_buffer(const ramus_pieces* p, size_t* size);
 
 #ifdef __cplusplus
 }

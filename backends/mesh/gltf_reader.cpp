@@ -15,7 +15,7 @@
 #include "backends/mesh/gltf_accessors.h"
 #include "backends/mesh/mesh_reader.h"
 #include "core/input_file.h"
-#include "mesh/up_axis.h"
+#include "core/up_axis.h"
 
 namespace ramus::mesh {
 namespace {

@@ -2,7 +2,7 @@
 // Every buffer view starts on a 4-byte boundary, attribute views carry the ARRAY_BUFFER target and
 // index views ELEMENT_ARRAY_BUFFER, and every accessor has exact min/max (taken from the float
 // values written), which is what the Khronos glTF-Validator checks. The z-up world becomes glTF's
-// y up here, in add_part and place_node, through mesh/up_axis.h.
+// y up here, in add_part and place_node, through core/up_axis.h.
 #include "backends/mesh/gltf_writer.h"
 
 #include <tiny_gltf.h>
@@ -17,7 +17,7 @@
 #include "backends/mesh/gltf_container.h"
 #include "backends/mesh/leaf_shape.h"
 #include "backends/texture/bark_maps.h"
-#include "mesh/up_axis.h"
+#include "core/up_axis.h"
 #include "mesh/vertex_arrays.h"
 
 namespace ramus::mesh {

@@ -1,6 +1,6 @@
 // glTF 2.0 output of TreeMeshes (through tinygltf): `.glb` (one binary file) or `.gltf` with its
 // buffer in a `.bin` beside it. Layout (docs/mesh.md): y up (the z-up mesh is turned here,
-// mesh/up_axis.h); one buffer; per LOD one mesh "<name>_LODk" with a "bark" and a
+// core/up_axis.h); one buffer; per LOD one mesh "<name>_LODk" with a "bark" and a
 // "leaf" primitive; one scene node per tree showing LOD0, translated to the mesh's local origin,
 // with the coarser levels as nodes named only by its MSFT_lod extension (screen coverage hints in
 // its extras); PBR materials bark (opaque) and leaf (alphaMode MASK); the wind weights as the

@@ -17,7 +17,7 @@
 #include <filesystem>
 #include <fstream>
 
-#include "mesh/up_axis.h"
+#include "core/up_axis.h"
 
 namespace ramus::mesh {
 namespace {

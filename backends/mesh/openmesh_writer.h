@@ -11,7 +11,7 @@
 #include <string>
 
 #include "mesh/tree_mesh.h"
-#include "mesh/up_axis.h"
+#include "core/up_axis.h"
 
 namespace ramus::texture {
 struct BarkTextures;

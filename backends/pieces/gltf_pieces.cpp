@@ -5,7 +5,7 @@
 // min/max on every float vertex accessor, and skin weights that sum to one in float.
 // glTF is y up; the pieces are assembled in ramus's z-up world. Every position, normal, rotation
 // and matrix is turned as it enters the model (y_up, y_up_quat, matrices: through
-// mesh/up_axis.h): vertices and points turn by R, transforms are conjugated R M R^-1,
+// core/up_axis.h): vertices and points turn by R, transforms are conjugated R M R^-1,
 // so skinning, instancing and the wind clip give the z-up result turned by R.
 #include "backends/pieces/gltf_pieces.h"
 
@@ -20,7 +20,7 @@
 #include "backends/mesh/gltf_buffer_builder.h"
 #include "backends/mesh/leaf_shape.h"
 #include "mesh/tangents.h"
-#include "mesh/up_axis.h"
+#include "core/up_axis.h"
 #include "backends/pieces/bark_tiles.h"
 #include "backends/pieces/foliage.h"
 #include "backends/pieces/skin_vertex.h"

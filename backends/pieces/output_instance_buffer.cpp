@@ -4,30 +4,12 @@
 #include "backends/pieces/output_instance_buffer.h"
 
 #include <algorithm>
-#include <cstring>
 #include <filesystem>
 
-#include "mesh/up_axis.h"
 #include "core/atomic_file.h"
 
 namespace ramus::pieces {
 namespace {
-
-void put_u16(std::string& out, std::uint16_t v) {
-  out += char(v & 0xff);
-  out += char(v >> 8);
-}
-void put_u32(std::string& out, std::uint32_t v) {
-  for (int s = 0; s < 32; s += 8) out += char((v >> s) & 0xff);
-}
-void put_f32(std::string& out, float f) {
-  std::uint32_t u;
-  std::memcpy(&u, &f, 4);
-  put_u32(out, u);
-}
-void pad_to(std::string& out, std::size_t alignment) {
-  while (out.size() % alignment) out += '\0';
-}
 
 std::string json_string(const std::string& s) {
   std::string out = "\"";
@@ -61,42 +43,28 @@ InstanceBufferBytes encode_instance_buffer(const PieceSet& set, const Forest& fo
   const std::size_t types = set.types.size(), trees = forest.trees.size();
   const std::size_t instances = layout.instances.size(), bones = layout.bone_count();
   const std::size_t tiles = layout.tiles.size();
-  const std::size_t ranges_offset = kInstanceBufferHeaderBytes;
-  const std::size_t bones_offset = (ranges_offset + 8 * types + 15) / 16 * 16;
-  const std::size_t instances_offset = bones_offset + kBoneRecordBytes * bones;
-  const std::size_t tiles_offset = instances_offset + kInstanceRecordBytes * instances;
-  const std::size_t total = (tiles_offset + 2 * tiles + 3) / 4 * 4;
+  const std::uint64_t total = instance_buffer_bytes(types, bones, instances, tiles);
   if (total > 0xffffffffull) {
     throw PiecesError("the instance buffer would exceed 4 GiB (" + std::to_string(total) +
                       " bytes); write fewer trees");
   }
-  InstanceBufferBytes out;
-  std::string& b = out.binary;
-  b.reserve(total);
-  b.append(kInstanceBufferMagic, 4);
-  for (std::size_t v :
-       {std::size_t(kInstanceBufferVersion), std::size_t(kInstanceBufferHeaderBytes), types, trees,
-        instances, bones, tiles, ranges_offset, bones_offset, instances_offset, tiles_offset}) {
-    put_u32(b, std::uint32_t(v));
-  }
-  for (const TypeRange& r : layout.type_ranges) {
-    put_u32(b, r.first);
-    put_u32(b, r.count);
-  }
-  pad_to(b, 16);
-  // In the glTF file's y-up frame, since the bones skin that file's piece meshes.
-  for (const Mat4& m : layout.skinning)
-    for (double x : mesh::z_up_to_y_up_matrix(m.m)) put_f32(b, float(x));
+  InstanceBufferTables tables;
+  tables.trees = std::uint32_t(trees);
+  tables.ranges = layout.type_ranges;
+  tables.skinning = layout.skinning;
   for (std::uint32_t i : layout.by_type) {
     const OutputInstance& inst = layout.instances[i];
-    put_u32(b, inst.bone_offset);
-    put_u32(b, inst.tile_offset);
-    put_u32(b, inst.tree);
-    put_u16(b, std::uint16_t(inst.type));
-    put_u16(b, std::uint16_t(set.types[inst.type].joints.size()));
+    tables.instances.push_back({inst.bone_offset, inst.tile_offset, inst.tree,
+                                std::uint16_t(inst.type),
+                                std::uint16_t(set.types[inst.type].joints.size())});
   }
-  for (std::uint16_t t : layout.tiles) put_u16(b, t);
-  pad_to(b, 4);
+  tables.tiles = layout.tiles;
+  InstanceBufferBytes out;
+  out.binary = write_instance_buffer_binary(tables);
+  const std::size_t ranges_offset = kInstanceBufferHeaderBytes;
+  const std::size_t bones_offset = (ranges_offset + 8 * types + 15) / 16 * 16;
+  const std::size_t instances_offset = bones_offset + kBoneRecordBytes * bones;
+  const std::size_t tiles_offset = instances_offset + kInstanceRecordBytes * instances;
 
   std::string& j = out.manifest;
   j += "{\n";

@@ -11,14 +11,17 @@
 
 #include "backends/pieces/output_layout.h"
 #include "backends/pieces/pieces.h"
+#include "formats/pieces_instance_buffer.h"
 
 namespace ramus::pieces {
 
-inline constexpr char kInstanceBufferMagic[4] = {'R', 'P', 'I', 'B'};
-inline constexpr std::uint32_t kInstanceBufferVersion = 1;
-inline constexpr std::uint32_t kInstanceBufferHeaderBytes = 48;
-inline constexpr std::uint32_t kInstanceRecordBytes = 16;
-inline constexpr std::uint32_t kBoneRecordBytes = 64;
+// The binary's layout lives in formats/pieces_instance_buffer.h, shared with the expansion of
+// an .rmb's placed-pieces stream; this file adds the forest's tables and the manifest.
+using ramus::kBoneRecordBytes;
+using ramus::kInstanceBufferHeaderBytes;
+using ramus::kInstanceBufferMagic;
+using ramus::kInstanceBufferVersion;
+using ramus::kInstanceRecordBytes;
 
 struct InstanceBufferBytes {
   std::string binary;

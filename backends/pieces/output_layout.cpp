@@ -1,8 +1,6 @@
 // Lays out an assembled forest for the writers (output_layout.h).
 #include "backends/pieces/output_layout.h"
 
-#include <algorithm>
-#include <numeric>
 #include <string>
 
 namespace ramus::pieces {
@@ -85,17 +83,11 @@ PiecesLayout layout_forest(const PieceSet& set, const Forest& forest) {
     const Joint& joint = set.types[out.bone_type[b]].joints.at(out.bone_joint[b]);
     out.skinning[b] = out.bone_world[b].matrix() * joint.inverse_bind;
   }
-  out.by_type.resize(out.instances.size());
-  std::iota(out.by_type.begin(), out.by_type.end(), 0u);
-  // Stable: within a type the instances keep their (tree, piece) order.
-  std::stable_sort(out.by_type.begin(), out.by_type.end(), [&](std::uint32_t a, std::uint32_t b) {
-    return out.instances[a].type < out.instances[b].type;
-  });
-  for (std::uint32_t i = 0; i < out.by_type.size(); ++i) {
-    TypeRange& r = out.type_ranges[out.instances[out.by_type[i]].type];
-    if (r.count == 0) r.first = i;
-    ++r.count;
-  }
+  std::vector<std::uint32_t> instance_type;
+  for (const OutputInstance& inst : out.instances) instance_type.push_back(inst.type);
+  InstanceTypeOrder order = order_instances_by_type(instance_type, set.types.size());
+  out.by_type = std::move(order.by_type);
+  out.type_ranges = std::move(order.ranges);
   return out;
 }
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "backends/pieces/pieces.h"
+#include "formats/pieces_instance_buffer.h"
 
 namespace ramus::pieces {
 
@@ -22,10 +23,8 @@ struct OutputInstance {
   std::uint32_t tile_count = 0;   // base quads of its piece type
 };
 
-struct TypeRange {
-  std::uint32_t first = 0;  // into PiecesLayout::by_type
-  std::uint32_t count = 0;
-};
+// first: into PiecesLayout::by_type; count.
+using TypeRange = InstanceTypeRange;
 
 struct PiecesLayout {
   std::vector<std::uint32_t> tree_bone_base;  // global index of each tree's bone 0

@@ -25,7 +25,7 @@
 #include <utility>
 #include <vector>
 
-#include "backends/pieces/piece_math.h"
+#include "core/similarity.h"
 #include "core/skeleton.h"
 #include "core/vec3.h"
 #include "grammar/diagnostic.h"

@@ -3,21 +3,15 @@
 // one of them per quad, so instances of one piece type look different. The draw is a texture-array
 // slice: type 1's tiles come first, then type 2's.
 #include "backends/pieces/pieces.h"
-#include "core/rng.h"
+#include "formats/rmb/rmb_piece_stream_expand.h"
 
 namespace ramus::pieces {
 
 std::vector<std::uint16_t> assign_tiles(const PieceMesh& base, const TileOptions& options,
                                         std::uint64_t seed, std::uint32_t placed) {
-  std::vector<std::uint16_t> tiles(base.quads.size());
-  Rng rng = Rng::stream(seed, placed, 0x74696c65);  // "tile"
-  const std::uint16_t n1 = std::max<std::uint16_t>(options.tiles_per_type[0], 1);
-  const std::uint16_t n2 = std::max<std::uint16_t>(options.tiles_per_type[1], 1);
-  for (std::size_t q = 0; q < tiles.size(); ++q) {
-    bool fork = q < base.quad_tile_type.size() && base.quad_tile_type[q] == 2;
-    tiles[q] = fork ? std::uint16_t(n1 + rng.below(n2)) : std::uint16_t(rng.below(n1));
-  }
-  return tiles;
+  // The draw the expansion of an .rmb's placed-pieces stream makes too (one code for both).
+  return draw_piece_tiles(base.quads.size(), base.quad_tile_type, options.tiles_per_type, seed,
+                          placed);
 }
 
 Forest pose_copies(const PieceSet& set, const Tree& tree, int copies, std::uint64_t seed,

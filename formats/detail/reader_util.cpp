@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <limits>
 
+#include "core/input_file.h"
 #include "formats/voxel_thin.h"
 
 namespace ramus {
@@ -144,6 +145,7 @@ CloudBuilder::CloudBuilder(std::string name, const ReadOptions& options, const R
     : name_(std::move(name)),
       options_(options),
       pass_(pass),
+      max_points_(max_input_points()),
       assumed_(pass.offset),
       lo_{kInf, kInf, kInf},
       hi_{-kInf, -kInf, -kInf} {}
@@ -198,6 +200,12 @@ bool CloudBuilder::add(const Vec3& p, const Vec3& normal, double intensity, std:
     kept_.push_back(local);
   } else {
     points_.push_back(p);
+  }
+  // The limit counts the points the cloud holds, so --thin lets a larger scan through.
+  if (kept_.size() + points_.size() > max_points_) {
+    fail(name_, "more than " + std::to_string(max_points_) +
+                    " points (--max-points): thin the scan while reading (--thin S), tile it "
+                    "(ramus tile) or raise the limit");
   }
   if (has_normals_)
     normals_.push_back({to_float(normal.x), to_float(normal.y), to_float(normal.z)});

@@ -134,6 +134,7 @@ class CloudBuilder {
   std::string name_;
   ReadOptions options_;
   const ReadPass& pass_;
+  std::uint64_t max_points_;  // core/input_file.h, --max-points
   std::optional<Vec3> assumed_;  // thinned: the offset the kept points are narrowed against
   std::vector<Vec3> points_;     // unthinned
   std::vector<Vec3f> kept_;      // thinned: relative to *assumed_

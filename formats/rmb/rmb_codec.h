@@ -17,6 +17,7 @@
 #include "compiler/ir.h"
 #include "compiler/voxel_rule.h"
 #include "formats/rmb/rmb_io.h"
+#include "formats/rmb/rmb_piece_stream.h"
 #include "formats/rmb/rmb_pieces.h"
 
 namespace ramus {
@@ -40,8 +41,9 @@ enum class RmbSection : std::uint8_t {
   Productions = 7,
   Axiom = 8,
   Ignored = 9,
-  Pieces = 10,      // optional: the piece sets of `pieces` blocks (formats/rmb/rmb_pieces.h)
-  VoxelRules = 11,  // optional: the voxel rule tables of `voxels` blocks
+  Pieces = 10,       // optional: the piece sets of `pieces` blocks (formats/rmb/rmb_pieces.h)
+  VoxelRules = 11,   // optional: the voxel rule tables of `voxels` blocks
+  PieceStream = 12,  // optional: placed pieces of assembled trees (rmb_piece_stream.h)
 };
 
 // One `voxels` block (docs/language.md) as the voxel rule table section (id 11) stores it:
@@ -65,6 +67,7 @@ struct RmbContents {
   ir::Grammar grammar;
   std::vector<RmbVoxelTable> voxels;
   RmbPieces pieces;
+  RmbPieceStream placed;  // empty unless the file holds section 12
 };
 
 // Whether the grammar stands for an lsystem block: a block always has a name, so the empty
@@ -112,6 +115,10 @@ std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& v
 // With piece sets (section 10, written only when `pieces` is not empty) and voxel rule tables.
 std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& voxels,
                        const RmbPieces& pieces, const RmbEncodeOptions& options = {});
+// With a placed-pieces stream too (section 12, written only when `placed` is not empty).
+std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& voxels,
+                       const RmbPieces& pieces, const RmbPieceStream& placed,
+                       const RmbEncodeOptions& options = {});
 
 struct RmbDecodeOptions {
   // Off only for fuzzing, to reach the structural checks behind the checksum.
@@ -120,7 +127,8 @@ struct RmbDecodeOptions {
 
 ir::Grammar decode_rmb(std::string_view bytes, const RmbDecodeOptions& options = {},
                        std::vector<rmb::TraceEntry>* trace = nullptr);
-// The same, with the piece sets and the voxel rule tables (verified like everything else).
+// The same, with the piece sets, the voxel rule tables and the placed-pieces stream (verified
+// like everything else).
 RmbContents decode_rmb_contents(std::string_view bytes, const RmbDecodeOptions& options = {},
                                 std::vector<rmb::TraceEntry>* trace = nullptr);
 

@@ -33,6 +33,7 @@ struct Decoder {
   int version = kRmbVersion;
   std::vector<RmbVoxelTable> voxels;
   RmbPieces pieces;
+  RmbPieceStream placed;
 
   Reader section(std::size_t b, std::size_t e) {
     Reader r(bytes, b, e, trace);
@@ -469,6 +470,9 @@ struct Decoder {
         return;
       case RmbSection::VoxelRules:
         return voxel_rules(r);
+      case RmbSection::PieceStream:
+        placed = read_rmb_piece_stream(r);
+        return;
       default:
         r.fail("expected a known section");
     }
@@ -476,9 +480,9 @@ struct Decoder {
 };
 
 const char* section_name(std::size_t id) {
-  static const char* kNames[] = {"?",         "meta",     "symbols",    "constants",
-                                 "locations", "bytecode", "codes",      "productions",
-                                 "axiom",     "ignored",  "piece sets", "voxel rule tables"};
+  static const char* kNames[] = {
+      "?",           "meta",  "symbols", "constants",  "locations",         "bytecode",     "codes",
+      "productions", "axiom", "ignored", "piece sets", "voxel rule tables", "placed pieces"};
   return id < std::size(kNames) ? kNames[id] : "reserved";
 }
 
@@ -550,9 +554,10 @@ RmbContents decode_rmb_contents(std::string_view bytes, const RmbDecodeOptions& 
   d.stripped = flags & kRmbStripped;
   const std::size_t count_at = r.pos();
   const std::size_t n = r.count("section count", 255, 3);
-  // Sections 1..9 always; then the optional 10 (piece sets) and 11 (voxel rule tables).
-  if (n < kSectionCount || n > kSectionCount + 2) {
-    r.fail_at(count_at, "expected 9 to 11 sections, found " + std::to_string(n));
+  // Sections 1..9 always; then the optional 10 (piece sets), 11 (voxel rule tables) and 12
+  // (placed pieces).
+  if (n < kSectionCount || n > kSectionCount + 3) {
+    r.fail_at(count_at, "expected 9 to 12 sections, found " + std::to_string(n));
   }
   std::size_t expect_at = 0;  // sections are contiguous, right after the table
   std::vector<std::pair<std::size_t, std::size_t>> ranges;
@@ -560,16 +565,18 @@ RmbContents decode_rmb_contents(std::string_view bytes, const RmbDecodeOptions& 
   for (std::size_t i = 0; i < n; ++i) {
     const std::size_t at = r.pos();
     const std::uint64_t id = r.varint("section id");
-    const bool ok = i < kSectionCount ? id == i + 1
-                                      : (id == std::size_t(RmbSection::Pieces) ||
-                                         id == std::size_t(RmbSection::VoxelRules)) &&
-                                            id > ids.back();
+    const bool ok = i < kSectionCount
+                        ? id == i + 1
+                        : id >= std::size_t(RmbSection::Pieces) &&
+                              id <= std::size_t(RmbSection::PieceStream) && id > ids.back();
     if (!ok) {
       const std::string want = i < kSectionCount
                                    ? std::to_string(i + 1) + " (" + section_name(i + 1) + ")"
                                : ids.back() < std::size_t(RmbSection::Pieces)
-                                   ? "10 (piece sets) or 11 (voxel rule tables)"
-                                   : "11 (voxel rule tables)";
+                                   ? "10 (piece sets), 11 (voxel rule tables) or 12 (placed pieces)"
+                               : ids.back() < std::size_t(RmbSection::VoxelRules)
+                                   ? "11 (voxel rule tables) or 12 (placed pieces)"
+                                   : "12 (placed pieces)";
       r.fail_at(at, "expected section id " + want + ", found " + std::to_string(id));
     }
     ids.push_back(std::size_t(id));
@@ -606,7 +613,7 @@ RmbContents decode_rmb_contents(std::string_view bytes, const RmbDecodeOptions& 
   verify_rmb_codes(d.g, d.code_at);
   if (d.stripped) d.name_stripped_locations();
   d.g.build_tables();
-  return RmbContents{std::move(d.g), std::move(d.voxels), std::move(d.pieces)};
+  return RmbContents{std::move(d.g), std::move(d.voxels), std::move(d.pieces), std::move(d.placed)};
 }
 
 std::string format_rmb_trace(std::string_view bytes, const std::vector<rmb::TraceEntry>& trace) {

@@ -454,4 +454,14 @@ std::string decompile(const RmbContents& contents) {
   return checked(format_file(file));
 }
 
+std::string decompile_left_out(const RmbContents& contents) {
+  if (contents.placed.empty()) return "";
+  std::size_t pieces = 0;
+  for (const RmbPlacedTree& t : contents.placed.trees) pieces += t.pieces.size();
+  return "the placed pieces (section 12: " + std::to_string(contents.placed.trees.size()) +
+         " tree(s), " + std::to_string(pieces) + " pieces of set '" + contents.placed.set +
+         "') are a built tree, not grammar text; `ramus build --target binary --placed-pieces` "
+         "stores them again";
+}
+
 }  // namespace ramus

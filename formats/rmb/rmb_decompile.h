@@ -34,4 +34,9 @@ std::string decompile(const ir::Grammar& g);
 // (formats/rmb/rmb_voxels.h).
 std::string decompile(const RmbContents& contents);
 
+// What a whole .rmb holds that grammar text cannot spell, for the caller to say: the
+// placed-pieces stream (section 12) is a built tree, not a rule, so the text leaves it out.
+// Empty when nothing is left out.
+std::string decompile_left_out(const RmbContents& contents);
+
 }  // namespace ramus

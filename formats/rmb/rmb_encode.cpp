@@ -293,6 +293,12 @@ std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& v
 
 std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& voxels,
                        const RmbPieces& pieces, const RmbEncodeOptions& options) {
+  return encode_rmb(g, voxels, pieces, RmbPieceStream{}, options);
+}
+
+std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& voxels,
+                       const RmbPieces& pieces, const RmbPieceStream& placed,
+                       const RmbEncodeOptions& options) {
   std::optional<int> exponent;
   if (options.tolerance) exponent = rmb_quantum_exponent(*options.tolerance);
   std::vector<std::pair<RmbSection, std::string>> sections;
@@ -337,6 +343,13 @@ std::string encode_rmb(const ir::Grammar& g, const std::vector<RmbVoxelTable>& v
   if (!voxels.empty()) {
     add(RmbSection::VoxelRules,
         [&voxels](Writer& w, const ir::Grammar&) { write_voxels(w, voxels); });
+  }
+  if (!placed.empty()) {
+    // Exact bytes whatever the options: quantized reals (--tolerance) do not apply, the poses
+    // are quantized by the stream's own rule.
+    Writer w;
+    write_rmb_piece_stream(w, placed);
+    sections.emplace_back(RmbSection::PieceStream, std::move(w.data()));
   }
 
   // Header: magic, version, flags, then the table. The table's size depends on the offsets it

@@ -57,7 +57,8 @@ TEST_CASE("options that do not apply to a mesh build are errors", "[assets][cli]
   fails({"build", src, "-o", obj, "--wind"}, "--wind needs a glTF output");
   fails({"build", src, "-o", ply, "--compress", "draco"}, "--compress needs a glTF output");
   fails({"build", src, "-o", glb, "--flatten"}, "--flatten applies to --target pieces only");
-  fails({"build", src, "-o", glb, "--poses", "3"}, "--poses applies to --target pieces only");
+  fails({"build", src, "-o", glb, "--poses", "3"},
+        "--poses applies to --target pieces and binary only");
   fails({"build", src, "-o", glb, "--zstd"}, "--zstd applies to --target binary only");
   fails({"build", src, "-o", (dir.path / "t.rmb").string(), "--target", "binary", "--wind"},
         "--wind applies to --target mesh and pieces only");

@@ -166,20 +166,22 @@ TEST_CASE("binary: damaged voxel tables are rejected with the byte offset", "[bi
     CHECK(e.offset == parent_at);
     CHECK(std::string(e.what()).find("expected a class below 16, found 16") != std::string::npos);
   }
-  // Ids from 12 on are not defined; after section 9 only 10 (piece sets) or 11 may follow.
+  // Ids from 13 on are not defined; after section 9 only 10 (piece sets), 11 or 12 may follow.
   std::size_t id_at = 0;
   for (const rmb::TraceEntry& e : trace) {
     if (e.field == "section id") id_at = e.offset;  // the last one: 11
   }
   REQUIRE(bytes[id_at] == 11);
   bad = bytes;
-  bad[id_at] = 12;
-  CHECK_THROWS_WITH(
-      decode_rmb_contents(fix_crc(bad)),
-      Catch::Contains("expected section id 10 (piece sets) or 11 (voxel rule tables), found 12"));
-  // The voxel tables read as piece sets are rejected inside the section.
-  bad[id_at] = 10;
-  CHECK_THROWS_AS(decode_rmb_contents(fix_crc(bad)), RmbError);
+  bad[id_at] = 13;
+  CHECK_THROWS_WITH(decode_rmb_contents(fix_crc(bad)),
+                    Catch::Contains("expected section id 10 (piece sets), 11 (voxel rule tables) "
+                                    "or 12 (placed pieces), found 13"));
+  // The voxel tables read as piece sets or as placed pieces are rejected inside the section.
+  for (char id : {10, 12}) {
+    bad[id_at] = id;
+    CHECK_THROWS_AS(decode_rmb_contents(fix_crc(bad)), RmbError);
+  }
 }
 
 TEST_CASE("binary: the voxels block of an inferred wavelet grammar round-trips", "[binary]") {

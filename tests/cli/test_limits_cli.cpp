@@ -121,3 +121,23 @@ TEST_CASE("limits: the size of any input file: --max-file-size", "[cli][limits]"
             .status == 0);
   CHECK(run_ramus({"--max-file-size", "1M", "inspect", scan}).status == 0);
 }
+
+TEST_CASE("limits: the points of a scan: --max-points", "[cli][limits]") {
+  cli_test::TempDir dir;
+  std::string xyz;
+  for (int i = 0; i < 200; ++i) xyz += std::to_string(i * 0.01) + " 0 " + std::to_string(i) + "\n";
+  const std::string scan = dir.write("scan.xyz", xyz).string();
+  const fs::path json = dir.path / "skeleton.json";
+  const auto r = run_ramus({"--max-points", "150", "reconstruct", scan, "-o", json.string()});
+  CHECK(r.status == 1);
+  CHECK(has(r.out, "scan.xyz"));
+  CHECK(has(r.out, "more than 150 points (--max-points)"));
+  CHECK_FALSE(fs::exists(json));
+  CHECK(run_ramus({"--max-points", "150", "inspect", scan}).status == 1);
+  CHECK(run_ramus({"--max-points", "200", "inspect", scan}).status == 0);
+  // The limit counts the points kept after thinning: 5 m cubes leave a few dozen.
+  CHECK(run_ramus({"--max-points", "150", "tile", scan, "-o", (dir.path / "tiles").string(),
+                   "--size", "100", "--buffer", "5", "--thin", "5"})
+            .status == 0);
+  CHECK(run_ramus({"--max-points", "0", "inspect", scan}).status != 0);  // not a limit
+}

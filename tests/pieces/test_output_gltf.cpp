@@ -8,7 +8,7 @@
 #include <map>
 #include <set>
 
-#include "mesh/up_axis.h"
+#include "core/up_axis.h"
 #include "backends/pieces/foliage.h"
 #include "backends/pieces/gltf_pieces.h"
 #include "backends/pieces/output_layout.h"

@@ -5,7 +5,7 @@
 // frame of the glTF piece meshes it skins.
 #include <cstring>
 
-#include "mesh/up_axis.h"
+#include "core/up_axis.h"
 #include "backends/pieces/output_instance_buffer.h"
 #include "core/atomic_file.h"
 #include "tests/pieces/output_fixture.h"

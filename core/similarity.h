@@ -1,14 +1,16 @@
-// Small transforms for the pieces back end: a column-major 4x4 matrix (the layout glTF stores),
-// a unit quaternion and a translation-rotation-uniform-scale triple (TRS). Every transform that
-// joins pieces is a similarity (Burkus et al. 2017, section 4.2), so a TRS with one scale factor
-// holds it exactly and writes straight into a glTF node.
+// Small transforms: a column-major 4x4 matrix (the layout glTF stores), a unit quaternion and a
+// translation-rotation-uniform-scale triple (TRS). Every transform that joins pieces is a
+// similarity (Burkus et al. 2017, section 4.2), so a TRS with one scale factor holds it exactly
+// and writes straight into a glTF node. In core/ because the pieces back end and the placed-pieces
+// stream of an .rmb (formats/rmb/rmb_piece_stream.h, expanded by the runtime too) compose poses
+// with this one code, which is what makes their bone matrices agree bit for bit.
 #pragma once
 
 #include <array>
 
 #include "core/vec3.h"
 
-namespace ramus::pieces {
+namespace ramus {
 
 // Column-major: m[col * 4 + row]; the translation is m[12], m[13], m[14].
 struct Mat4 {
@@ -36,6 +38,7 @@ struct Quat {
   Vec3 rotate(const Vec3& v) const;
   Quat normalized() const;
   Quat conjugate() const { return {w, -x, -y, -z}; }
+  bool operator==(const Quat&) const = default;
 };
 
 // Normalized linear interpolation between two rotations along the short arc.
@@ -51,6 +54,7 @@ struct Trs {
   Vec3 point(const Vec3& p) const { return t + r.rotate(p) * s; }
   Trs operator*(const Trs& o) const;  // (this * o)(x) = this(o(x))
   Trs inverse() const;
+  bool operator==(const Trs&) const = default;
 };
 
-}  // namespace ramus::pieces
+}  // namespace ramus

@@ -1,9 +1,9 @@
-// Transforms of the pieces back end (piece_math.h).
-#include "backends/pieces/piece_math.h"
+// Similarity transforms (similarity.h).
+#include "core/similarity.h"
 
 #include <cmath>
 
-namespace ramus::pieces {
+namespace ramus {
 
 Mat4 Mat4::operator*(const Mat4& o) const {
   Mat4 r;
@@ -141,4 +141,4 @@ Trs Trs::inverse() const {
   return {-(ri.rotate(t) / s), ri, 1.0 / s};
 }
 
-}  // namespace ramus::pieces
+}  // namespace ramus
