@@ -36,8 +36,8 @@ const std::string& location_of(const ir::Grammar& g, std::size_t where) {
 
 std::string describe(const ir::Grammar& g, const ir::Production& p, const ExprError& e,
                      const PassInfo& info, std::size_t i) {
-  const std::string& at =
-      e.code < g.codes.size() ? location_of(g, g.codes[e.code].where) : location_of(g, ~0ull);
+  const std::string& at = e.code < g.codes.size() ? location_of(g, g.codes[e.code].where)
+                                                  : location_of(g, std::size_t(-1));
   return at + ": " + e.what() + " in production `" + p.text + "` (" + location_of(g, p.where) +
          ") at " + info.where + ", module " + std::to_string(i);
 }

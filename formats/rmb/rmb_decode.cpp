@@ -201,7 +201,8 @@ struct Decoder {
       }
       const std::int64_t begin = full ? prev_end + r.svarint("begin delta") : prev_end;
       if (version == 1) len = r.varint("length");
-      if (begin < 0 || std::uint64_t(begin) > g.code.size() || len > g.code.size() - begin) {
+      if (begin < 0 || std::uint64_t(begin) > g.code.size() ||
+          len > std::uint64_t(g.code.size()) - std::uint64_t(begin)) {
         r.fail_at(code_at.back(), "expected a code range inside the " +
                                       std::to_string(g.code.size()) + " instructions");
       }
