@@ -3,8 +3,9 @@
 //
 // Scans, grammars, skeletons, manifests and binary grammars come from anyone; a reader that
 // slurps a file must not be led into reading 500 GB because a path pointed at the wrong disk.
-// The limit is process-wide (the CLI sets it once from `--max-file-size`, docs/robustness.md)
-// so every stage's reader applies the same one without threading it through each call.
+// The limits are process-wide (the CLI sets them once from `--max-file-size` and `--max-points`,
+// docs/robustness.md) so every stage's reader applies the same ones without threading them
+// through each call.
 #pragma once
 
 #include <cstdint>

@@ -373,7 +373,11 @@ InferredGrammar infer_grammar(const BranchRules& extracted, const GrammarOptions
 
     out.productions = 1;
     out.alternatives = 1;
-    for (const auto& [order, st] : stats) {
+    for (const auto& entry : stats) {
+      // Plain names, not a structured binding: the production lambda below captures `order`,
+      // which clang before 16 refuses for a binding.
+      const auto& order = entry.first;
+      const auto& st = entry.second;
       std::vector<const RuleGroup*> mine;
       for (const RuleGroup& g : out.groups) {
         if (g.order == order) mine.push_back(&g);
