@@ -14,7 +14,7 @@ start=$(date +%s)
 cmake --preset clang-asan >/dev/null
 mapfile -t fuzz < <(cd tests/fuzz && ls fuzz_*.cpp | sed 's/\.cpp$//')
 cmake --build build/clang-asan -j "$jobs" --target ramus test_core test_formats test_grammar \
-  test_compiler test_runtime "${fuzz[@]}"
+  test_compiler test_runtime runtime_c_api_smoke grow_mesh "${fuzz[@]}"
 built=$(date +%s)
 echo "ci-extra: clang ASan+UBSan build took $((built - start)) s"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1

@@ -70,9 +70,13 @@ InstanceBufferTables expand_piece_stream(const RmbPieceStream& s) {
         const Trs local = rmb_joint_local(s, tree, i, j);
         // The root joint hangs from the parent's terminal joint of its leaf rim; the others
         // from the piece's root joint.
-        const bool root = j == 0 && p.parent == kRmbNoParent;
-        const std::size_t parent = j > 0 ? offset : piece_bone[p.parent] + 1 + p.leaf;
-        world.push_back(root ? local : world[parent] * local);
+        // (A root piece has no parent to index: piece_bone[kRmbNoParent] would read past the end.)
+        if (j == 0 && p.parent == kRmbNoParent) {
+          world.push_back(local);
+        } else {
+          const std::size_t parent = j > 0 ? offset : piece_bone[p.parent] + 1 + p.leaf;
+          world.push_back(world[parent] * local);
+        }
         out.skinning.push_back(world.back().matrix() * inverse_bind[p.type][j]);
       }
       InstanceRecord r;
