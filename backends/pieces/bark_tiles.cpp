@@ -5,6 +5,7 @@
 
 #include "backends/texture/tile_set.h"
 #include "core/rng.h"
+#include "core/union_find.h"
 
 namespace ramus::pieces {
 namespace {
@@ -41,16 +42,6 @@ bool regular(const Side& x, const Side& y, bool reversed) {
   return y.side == (x.side + 2) % 4 && reversed;
 }
 
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
-};
-
 }  // namespace
 
 std::size_t irregular_joins(const PieceMesh& base) {
@@ -78,7 +69,7 @@ BarkTiling bark_tiling(const PieceSet& set, const Tree& tree, int edges, std::ui
     auto slot = [](const Side& s) { return 4 * s.quad + std::uint32_t(s.side); };
     for (const auto& [edge, list] : sides) {
       if (list.size() == 2 && regular(list[0], list[1], list[0].from == list[1].to))
-        tied.join(slot(list[0]), slot(list[1]));
+        tied.unite(slot(list[0]), slot(list[1]));
     }
     std::vector<char> on_rim(4 * m.quads.size(), 0);
     auto mark_rim = [&](const Rim& rim) {

@@ -19,12 +19,12 @@
 
 #include "backends/mesh/gltf_buffer_builder.h"
 #include "backends/mesh/leaf_shape.h"
-#include "mesh/tangents.h"
-#include "core/up_axis.h"
 #include "backends/pieces/bark_tiles.h"
 #include "backends/pieces/foliage.h"
 #include "backends/pieces/skin_vertex.h"
 #include "backends/texture/bark_maps.h"
+#include "core/up_axis.h"
+#include "mesh/tangents.h"
 
 namespace ramus::pieces {
 namespace {
@@ -147,6 +147,18 @@ const PieceMesh& lod_mesh(const PieceSet& set, std::uint32_t type, std::size_t l
   return t.lods[lod];
 }
 
+// POSITION, NORMAL and TEXCOORD_0 of a triangle primitive, in that accessor order (bark pieces
+// and leaf cards alike).
+void add_surface_attributes(Builder& b, tinygltf::Primitive& prim, const std::vector<float>& pos,
+                            const std::vector<float>& nrm, const std::vector<float>& uv) {
+  prim.attributes["POSITION"] =
+      b.floats(pos, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  prim.attributes["NORMAL"] =
+      b.floats(nrm, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  prim.attributes["TEXCOORD_0"] =
+      b.floats(uv, 2, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+}
+
 // Vertex attributes of one primitive, filled piece by piece.
 struct SkinnedVertices {
   std::vector<float> pos, nrm, uv, wts;
@@ -173,12 +185,7 @@ struct SkinnedVertices {
     tinygltf::Primitive prim;
     prim.mode = TINYGLTF_MODE_TRIANGLES;
     prim.material = material;
-    prim.attributes["POSITION"] =
-        b.floats(pos, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-    prim.attributes["NORMAL"] =
-        b.floats(nrm, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-    prim.attributes["TEXCOORD_0"] =
-        b.floats(uv, 2, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+    add_surface_attributes(b, prim, pos, nrm, uv);
     // The bark material's normal map needs tangents (mesh/tangents.h).
     prim.attributes["TANGENT"] = b.floats(mesh::vertex_tangents(pos, nrm, uv, idx), 4,
                                           TINYGLTF_TYPE_VEC4, TINYGLTF_TARGET_ARRAY_BUFFER, true);
@@ -346,12 +353,7 @@ int add_leaves(Builder& b, const PieceSet& set, const Forest& forest, const Piec
   tinygltf::Primitive prim;
   prim.mode = TINYGLTF_MODE_TRIANGLES;
   prim.material = b.leaf_material();
-  prim.attributes["POSITION"] =
-      b.floats(pos, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-  prim.attributes["NORMAL"] =
-      b.floats(nrm, 3, TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER, true);
-  prim.attributes["TEXCOORD_0"] =
-      b.floats(uv, 2, TINYGLTF_TYPE_VEC2, TINYGLTF_TARGET_ARRAY_BUFFER, true);
+  add_surface_attributes(b, prim, pos, nrm, uv);
   if (skinned) {
     prim.attributes["JOINTS_0"] = b.joints(jts, joint_bones.size() > 255);
     prim.attributes["WEIGHTS_0"] =

@@ -7,28 +7,9 @@
 #include <map>
 #include <numeric>
 
+#include "core/union_find.h"
+
 namespace ramus::shape {
-
-namespace {
-
-struct UnionFind {
-  std::vector<std::size_t> up;
-  explicit UnionFind(std::size_t n) : up(n) { std::iota(up.begin(), up.end(), std::size_t(0)); }
-  std::size_t find(std::size_t i) {
-    while (up[i] != i) {
-      up[i] = up[up[i]];
-      i = up[i];
-    }
-    return i;
-  }
-  void join(std::size_t a, std::size_t b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) up[std::max(a, b)] = std::min(a, b);  // the smaller index leads: deterministic
-  }
-};
-
-}  // namespace
 
 Pieces find_pieces(const Skeleton& s) {
   const std::size_t n = s.nodes.size();
@@ -40,7 +21,7 @@ Pieces find_pieces(const Skeleton& s) {
     const std::uint32_t p = s.nodes[i].parent;
     if (p == kNoParent) continue;
     on_edge[i] = on_edge[p] = true;
-    uf.join(i, p);
+    uf.unite(i, p);
   }
 
   // Endpoints that touch: bucket them on a grid of the tolerance and compare each with the
@@ -71,7 +52,7 @@ Pieces find_pieces(const Skeleton& s) {
             if (it == grid.end()) continue;
             for (std::size_t j : it->second) {
               if (j != i && distance(s.nodes[i].position, s.nodes[j].position) <= tol) {
-                uf.join(i, j);
+                uf.unite(i, j);
               }
             }
           }

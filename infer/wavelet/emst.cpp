@@ -12,6 +12,8 @@
 #include <string>
 #include <tuple>
 
+#include "core/union_find.h"
+
 namespace ramus::wavelet {
 namespace {
 
@@ -37,21 +39,6 @@ struct Candidate {
   std::uint32_t from = kNone, to = kNone;
   auto key() const { return std::tuple(d2, std::min(from, to), std::max(from, to)); }
   bool better_than(const Candidate& o) const { return o.to == kNone || key() < o.key(); }
-};
-
-struct UnionFind {
-  std::vector<std::uint32_t> parent;
-  explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-  std::uint32_t find(std::uint32_t x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  bool unite(std::uint32_t a, std::uint32_t b) {
-    a = find(a), b = find(b);
-    if (a == b) return false;
-    parent[std::max(a, b)] = std::min(a, b);
-    return true;
-  }
 };
 
 // nanoflann result set: the best point outside component `comp` seen from point `from` that beats

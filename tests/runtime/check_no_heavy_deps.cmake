@@ -1,6 +1,6 @@
 # Proves ramus_runtime uses no Boost, Eigen or TBB, and (with the mesher of mesh/) none of the
 # back end's mesh libraries: (1) none is among the libraries the target links, and (2) no header
-# any of its sources includes, followed transitively by the compiler (-M), lies under boost/,
+# any of its sources includes, followed transitively by the compiler (-H), lies under boost/,
 # eigen3/, Eigen/, tbb/, oneapi/, nanoflann/, OpenMesh/, draco/, stb/ or nlohmann/, or is
 # tiny_gltf.h or meshoptimizer.h. Run by ctest as
 #   cmake -DCXX=... -DROOT=... -DSOURCES=a.cpp|b.cpp -DLIBS=x|y -P check_no_heavy_deps.cmake
@@ -17,14 +17,23 @@ foreach(src ${SOURCES})
   if(NOT IS_ABSOLUTE "${src}")
     set(src "${ROOT}/runtime/${src}")
   endif()
-  # -M (not -MM): system headers too, where Boost and TBB would live.
-  execute_process(COMMAND ${CXX} -std=c++20 -I${ROOT} -M ${src}
-    OUTPUT_VARIABLE deps ERROR_VARIABLE errors RESULT_VARIABLE rc)
+  # -H lists every header actually included, system headers too (where Boost and TBB would
+  # live), one per line after dots for the depth. Not -M: clang's -M also lists the files that
+  # `__has_include` merely finds (libstdc++'s pstl_config.h asks for <tbb/tbb.h>).
+  execute_process(COMMAND ${CXX} -std=c++20 -I${ROOT} -H -fsyntax-only ${src}
+    OUTPUT_VARIABLE ignored ERROR_VARIABLE tree RESULT_VARIABLE rc)
   if(NOT rc EQUAL 0)
-    message(FATAL_ERROR "cannot scan ${src}: ${errors}")
+    message(FATAL_ERROR "cannot scan ${src}: ${tree}")
   endif()
-  string(REPLACE "\\\n" " " deps "${deps}")
-  separate_arguments(deps UNIX_COMMAND "${deps}")
+  string(REGEX MATCHALL "(^|\n)[.]+ [^\n]+" lines "${tree}")
+  set(deps "")
+  foreach(line ${lines})
+    string(REGEX REPLACE "^\n?[.]+ " "" dep "${line}")
+    list(APPEND deps "${dep}")
+  endforeach()
+  if(deps STREQUAL "")
+    message(FATAL_ERROR "${src}: the compiler listed no included header")
+  endif()
   foreach(dep ${deps})
     if(dep MATCHES "${forbidden}")
       message(FATAL_ERROR "${src} includes ${dep}")
