@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -106,12 +107,13 @@ inline std::vector<SymbolPlan> plan_symbols(const ir::Grammar& g, const ir::Tabl
 inline std::uint32_t pick_weighted(const double* w, std::uint32_t n, std::uint32_t fallback,
                                    Rng rng) {
   double u = rng.uniform01() * w[n];
-  std::uint32_t k = n;
+  std::uint64_t below = 0;  // bit j: u < w[j] after the weights before j were subtracted
   for (std::uint32_t j = 0; j < n; ++j) {
-    k = k == n && u < w[j] ? j : k;
+    below |= std::uint64_t(u < w[j]) << j;
     u -= w[j];
   }
-  return k == n ? fallback : k;
+  const auto k = std::uint32_t(std::countr_zero(below));  // 64 when no bit is set
+  return k < n ? k : fallback;
 }
 
 // Whether codes a and b always give the same value for the same slots: the same pure
