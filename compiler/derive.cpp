@@ -222,8 +222,8 @@ struct Pass {
       const SymbolPlan& pl = plan[sym[i]];
       const std::uint32_t np = std::uint16_t(low[i + 1] - low[i]);
       if (pl.fixed_for(np)) {
-        m += pl.mods - 1;
-        p += pl.params - np;
+        m += std::uint64_t(pl.mods) - 1;
+        p += std::uint64_t(pl.params) - np;
         ++h;
         continue;
       }
@@ -239,8 +239,8 @@ struct Pass {
         put_end = choice.data() + choice.size();
       }
       *put++ = a;
-      m += amods[a] - 1;
-      p += (a == 0 ? np : apars[a]) - np;
+      m += std::uint64_t(amods[a]) - 1;
+      p += std::uint64_t(a == 0 ? np : apars[a]) - np;
       h += a != 0;
     }
     choice.resize(std::size_t(put - choice.data()));
