@@ -229,8 +229,9 @@ struct Pass {
       }
       const std::uint32_t a =
           pl.kind == SymbolPlan::Weighted && pl.takes(np)
-              ? pl.alt + 1 + pick_weighted(w + pl.weights, pl.params, pl.fallback,
-                                           stream_from_prefix(stream, 2 * std::uint64_t(i)))
+              ? pl.alt + 1 +
+                    pick_weighted(w + pl.weights, pl.params, pl.fallback,
+                                  stream_from_prefix(stream, 2 * std::uint64_t(i)))
               : choose(i);
       if (put == put_end) {  // grows the chunk's choices (kept for the next pass)
         const std::size_t used = std::size_t(put - choice.data());

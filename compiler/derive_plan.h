@@ -26,12 +26,12 @@ struct SymbolPlan {
   enum Kind : std::uint8_t { Copy, Fixed, Weighted, General };
   static constexpr std::uint16_t kAnyParams = 0xffff;
   Kind kind = Copy;
-  std::uint16_t nparams = 0;  // Fixed, Weighted: the predecessor's parameter count, or kAnyParams
-  std::uint32_t alt = 0;      // Fixed: the alternative; Weighted: the first alternative
-  std::uint32_t mods = 0;     // Fixed: modules and parameters it writes
-  std::uint32_t params = 0;   // Weighted: the number of alternatives
-  std::uint32_t weights = 0;  // Weighted: first of them in Pass::weights, then their sum
-  std::uint32_t fallback = 0; // Weighted: the last alternative with a positive weight
+  std::uint16_t nparams = 0;   // Fixed, Weighted: the predecessor's parameter count, or kAnyParams
+  std::uint32_t alt = 0;       // Fixed: the alternative; Weighted: the first alternative
+  std::uint32_t mods = 0;      // Fixed: modules and parameters it writes
+  std::uint32_t params = 0;    // Weighted: the number of alternatives
+  std::uint32_t weights = 0;   // Weighted: first of them in Pass::weights, then their sum
+  std::uint32_t fallback = 0;  // Weighted: the last alternative with a positive weight
 
   bool takes(std::uint32_t np) const { return nparams == kAnyParams || nparams == np; }
   bool fixed_for(std::uint32_t np) const { return kind == Fixed && takes(np); }

@@ -1,8 +1,8 @@
 #include "compiler/module_string.h"
 
 #include <cctype>
-#include <cstdint>
 #include <charconv>
+#include <cstdint>
 #include <cstdlib>
 #include <mutex>
 #include <new>
@@ -37,7 +37,7 @@ std::size_t size_class(std::size_t bytes) {
 }  // namespace
 
 // Large buffers (2 MB and more) freed by one derivation are kept for the next one, at most
-// kKeptLarge of them and an eighth of physical memory: a process that derives again (a
+// kKept of them and an eighth of physical memory: a process that derives again (a
 // benchmark's repeats, an editor's live preview, a search over grammars) then writes to pages it
 // already has instead of the kernel supplying fresh zeroed ones, about a microsecond per 4 KB
 // page (docs/engine.md, "The string"). A kept buffer's pages are given back lazily (MADV_FREE):
@@ -45,8 +45,7 @@ std::size_t size_class(std::size_t bytes) {
 // does not matter because every element is written before it is read.
 namespace {
 
-constexpr int kKeptLarge = 8;
-Kept kept_large[kKeptLarge];
+Kept kept_large[kKept];
 std::size_t kept_large_bytes = 0;
 
 std::size_t large_keep_limit() {
@@ -135,6 +134,17 @@ void free_buffer(void* p, std::size_t bytes) noexcept {
     }
   }
   std::free(p);
+}
+
+void release_kept_buffers() noexcept {
+  std::lock_guard<std::mutex> lock(kept_mutex);
+  for (Kept* list : {kept, kept_large}) {
+    for (int k = 0; k < kKept; ++k) {
+      if (list[k].p) std::free(list[k].p);
+      list[k] = {};
+    }
+  }
+  kept_large_bytes = 0;
 }
 
 namespace {

@@ -22,6 +22,8 @@ namespace ramus {
 // up to 8 and an eighth of physical memory, whose pages the kernel may take back meanwhile.
 void* allocate_buffer(std::size_t bytes);
 void free_buffer(void* p, std::size_t bytes) noexcept;
+// Gives every kept buffer back to the system (a long-lived process done deriving may call it).
+void release_kept_buffers() noexcept;
 inline constexpr std::size_t kLargeBuffer = std::size_t(2) << 20;
 inline constexpr std::size_t kMidBuffer = std::size_t(64) << 10;
 
