@@ -69,7 +69,7 @@ struct Pass {
   Successors succ;
   // Per chunk, for each module its symbol does not decide (in order): 0 copy, else
   // alternative + 1.
-  std::vector<std::vector<std::uint32_t>>* choices = nullptr;
+  std::vector<PodVector<std::uint32_t>>* choices = nullptr;
 
   // Binds production p's slots for module i and checks its predecessor and contexts.
   bool match(const ir::Production& p, std::size_t i, double* slots) const {
@@ -83,9 +83,11 @@ struct Pass {
     return true;
   }
 
-  // Picks the alternative for module i (0: copied). Guards and probabilities draw from the
-  // module's matching stream (seed, key, 2i).
-  std::uint32_t choose(std::size_t i, double* slots) const {
+  // Picks the alternative for module i (0: copied) by matching. Guards and probabilities draw
+  // from the module's matching stream (seed, key, 2i). Out of line: the choose sweep's loop
+  // keeps its counters in registers.
+  [[gnu::noinline]] std::uint32_t choose(std::size_t i) const {
+    double slots[ir::kMaxSlots];
     const ir::SymbolId s = in.symbol(i);
     const std::uint32_t b = table.first[s], e = table.first[s + 1];
     if (b == e) return 0;
@@ -183,47 +185,66 @@ struct Pass {
   // Per-chunk output sizes (filled by choose_chunk, then prefix-summed into offsets).
   std::vector<std::uint64_t> mods, pars, hits;
 
+  // Per alternative + 1 (0: a copied module), the modules and parameters it writes (a copy
+  // writes its own parameter count instead of out_params[0]).
+  std::vector<std::uint32_t> out_mods, out_params;
+  std::vector<std::uint8_t> rewrites;  // per symbol: 1 unless its plan is Copy
+
   // First sweep over chunk c: choose the alternative of every module that needs a choice and
-  // count the output.
+  // count the output: the chunk's own modules and parameters plus, per rewritten module, what
+  // its successor writes more than itself, so that a copied module costs one test. The counts
+  // are table lookups on the choice, not branches on it: a stochastic choice is random, and a
+  // branch on it would be mispredicted about every other time.
   void choose_chunk(std::size_t c) {
-    double slots[ir::kMaxSlots];
     const ir::SymbolId* sym = in.symbols_data();
     const std::uint16_t* low = in.lows_data();
     const SymbolPlan* plan = plans.data();
-    std::vector<std::uint32_t>& choice = (*choices)[c];
-    choice.clear();
-    std::uint64_t m = 0, p = 0, h = 0;
-    for (std::size_t i = c * kChunk, e = std::min(in.size(), i + kChunk); i < e; ++i) {
+    const double* w = weights.data();
+    const std::uint32_t* amods = out_mods.data();
+    const std::uint32_t* apars = out_params.data();
+    PodVector<std::uint32_t>& choice = (*choices)[c];
+    choice.resize(choice.capacity());  // what earlier passes grew, without zero-filling
+    std::uint32_t* put = choice.data();
+    std::uint32_t* put_end = put + choice.size();
+    const std::size_t b = c * kChunk, e = std::min(in.size(), b + kChunk);
+    std::uint64_t m = e - b, p = in.begin(e) - in.begin(b), h = 0;  // wrap-around sums
+    // The rewritten modules' offsets in the chunk, gathered without a branch per module: which
+    // modules are copied follows the string's shape, which a stochastic grammar makes random.
+    std::uint16_t todo[kChunk];
+    std::size_t ntodo = 0;
+    const std::uint8_t* rewritten = rewrites.data();
+    for (std::size_t i = b; i < e; ++i) {
+      todo[ntodo] = std::uint16_t(i - b);
+      ntodo += rewritten[sym[i]];
+    }
+    for (std::size_t t = 0; t < ntodo; ++t) {
+      const std::size_t i = b + todo[t];
       const SymbolPlan& pl = plan[sym[i]];
       const std::uint32_t np = std::uint16_t(low[i + 1] - low[i]);
-      if (pl.kind == SymbolPlan::Copy) {
-        m += 1;
-        p += np;
-        continue;
-      }
       if (pl.fixed_for(np)) {
-        m += pl.mods;
-        p += pl.params;
+        m += std::uint64_t(pl.mods) - 1;
+        p += std::uint64_t(pl.params) - np;
         ++h;
         continue;
       }
       const std::uint32_t a =
           pl.kind == SymbolPlan::Weighted && pl.takes(np)
               ? pl.alt + 1 +
-                    pick_weighted(weights.data() + pl.weights, pl.params,
+                    pick_weighted(w + pl.weights, pl.params, pl.fallback,
                                   stream_from_prefix(stream, 2 * std::uint64_t(i)))
-              : choose(i, slots);
-      choice.push_back(a);
-      if (a == 0) {
-        m += 1;
-        p += np;
-      } else {
-        const ir::Alternative& alt = g.alternatives[a - 1];
-        m += alt.succ_end - alt.succ_begin;
-        p += alt.out_params;
-        ++h;
+              : choose(i);
+      if (put == put_end) {  // grows the chunk's choices (kept for the next pass)
+        const std::size_t used = std::size_t(put - choice.data());
+        choice.resize(std::max<std::size_t>(2 * used, 4096));
+        put = choice.data() + used;
+        put_end = choice.data() + choice.size();
       }
+      *put++ = a;
+      m += std::uint64_t(amods[a]) - 1;
+      p += std::uint64_t(a == 0 ? np : apars[a]) - np;
+      h += a != 0;
     }
+    choice.resize(std::size_t(put - choice.data()));
     mods[c + 1] = m;
     pars[c + 1] = p;
     hits[c] = h;
@@ -294,18 +315,21 @@ struct Pass {
       }
     }
     LazyRng rng(stream, 2 * std::uint64_t(i) + 1);
+    const std::uint32_t n = alt.succ_end - alt.succ_begin;
     const ir::SymbolId* sym = succ.symbols.data() + succ.first_module[alt_id];
-    const std::uint16_t* nargs = succ.nargs.data() + succ.first_module[alt_id];
+    const std::uint32_t* offset = succ.offsets.data() + succ.first_module[alt_id];
+    for (std::uint32_t m = 0; m < n; ++m) {
+      w.sym[o + m] = sym[m];
+      w.low[o + m] = std::uint16_t(pofs + offset[m]);
+    }
+    constexpr std::size_t kMask = (std::size_t(1) << kBlockShift) - 1;
+    for (std::size_t q = (o + kMask) & ~kMask; q < o + n; q += kMask + 1) {
+      w.base[q >> kBlockShift] = pofs + offset[q - o];  // a block starts in the successor
+    }
     const ArgOp* arg = succ.args.data() + succ.first_arg[alt_id];
-    double* const first_param = w.params + pofs;
+    double* const out = w.params + pofs;
     try {
-      for (std::uint32_t m = 0, n = alt.succ_end - alt.succ_begin; m < n; ++m, ++o) {
-        w.sym[o] = sym[m];
-        w.begin(o, pofs);
-        for (std::uint32_t a = 0; a < nargs[m]; ++a, ++arg) {
-          w.params[pofs++] = value(*arg, first_param, slots, rng);
-        }
-      }
+      for (std::uint32_t k = 0; k < alt.out_params; ++k) out[k] = value(arg[k], out, slots, rng);
     } catch (const ExprError& err) {
       throw DeriveError(describe(g, p, err, info, i));
     }
@@ -414,8 +438,18 @@ bool apply_pass(const ir::Grammar& g, ir::Kind kind, const ModuleString& in, Mod
             {},
             {},
             {},
+            {},
+            {},
+            {},
             {}};
   pass.plans = plan_symbols(g, table, pass.weights);
+  for (const SymbolPlan& plan : pass.plans) pass.rewrites.push_back(plan.kind != SymbolPlan::Copy);
+  pass.out_mods.assign(1, 1);
+  pass.out_params.assign(1, 0);
+  for (const ir::Alternative& alt : g.alternatives) {
+    pass.out_mods.push_back(alt.succ_end - alt.succ_begin);
+    pass.out_params.push_back(alt.out_params);
+  }
   PassScratch own;
   PassScratch& scratch = info.scratch ? *info.scratch : own;
   pass.choices = &scratch.choices;

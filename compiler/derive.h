@@ -47,9 +47,10 @@ ModuleString derive(const ir::Grammar& g, const DeriveOptions& options,
                     DeriveStats* stats = nullptr);
 
 // Buffers one pass leaves to the next (derive() keeps one for all its passes): the choices of
-// each chunk's modules that were not decided by their symbol alone, in module order.
+// each chunk's modules that were not decided by their symbol alone, in module order (sized
+// without zero-filling: the choose sweep writes before it reads).
 struct PassScratch {
-  std::vector<std::vector<std::uint32_t>> choices;
+  std::vector<PodVector<std::uint32_t>> choices;
 };
 
 // What one pass needs to know besides the table.

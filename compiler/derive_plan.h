@@ -5,6 +5,7 @@
 #pragma once
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -25,11 +26,12 @@ struct SymbolPlan {
   enum Kind : std::uint8_t { Copy, Fixed, Weighted, General };
   static constexpr std::uint16_t kAnyParams = 0xffff;
   Kind kind = Copy;
-  std::uint16_t nparams = 0;  // Fixed, Weighted: the predecessor's parameter count, or kAnyParams
-  std::uint32_t alt = 0;      // Fixed: the alternative; Weighted: the first alternative
-  std::uint32_t mods = 0;     // Fixed: modules and parameters it writes
-  std::uint32_t params = 0;   // Weighted: the number of alternatives
-  std::uint32_t weights = 0;  // Weighted: first of them in Pass::weights, then their sum
+  std::uint16_t nparams = 0;   // Fixed, Weighted: the predecessor's parameter count, or kAnyParams
+  std::uint32_t alt = 0;       // Fixed: the alternative; Weighted: the first alternative
+  std::uint32_t mods = 0;      // Fixed: modules and parameters it writes
+  std::uint32_t params = 0;    // Weighted: the number of alternatives
+  std::uint32_t weights = 0;   // Weighted: first of them in Pass::weights, then their sum
+  std::uint32_t fallback = 0;  // Weighted: the last alternative with a positive weight
 
   bool takes(std::uint32_t np) const { return nparams == kAnyParams || nparams == np; }
   bool fixed_for(std::uint32_t np) const { return kind == Fixed && takes(np); }
@@ -61,6 +63,14 @@ inline bool constant_weights(const ir::Grammar& g, const ir::Production& p,
   return true;
 }
 
+// The last alternative with a positive weight (pick_weighted's fallback).
+inline std::uint32_t last_positive(const double* w, std::uint32_t n) {
+  for (std::uint32_t k = n; k-- > 0;) {
+    if (w[k] > 0) return k;
+  }
+  return 0;
+}
+
 inline std::vector<SymbolPlan> plan_symbols(const ir::Grammar& g, const ir::Table& table,
                                             std::vector<double>& weights) {
   std::vector<SymbolPlan> plans(g.symbols.size());
@@ -83,22 +93,27 @@ inline std::vector<SymbolPlan> plan_symbols(const ir::Grammar& g, const ir::Tabl
       plan.kind = SymbolPlan::Weighted;
       plan.params = p.alt_end - p.alt_begin;
       plan.weights = first;
+      plan.fallback = last_positive(weights.data() + first, plan.params);
     }
   }
   return plans;
 }
 
-// Pass::pick() for constant weights w[0..n) with their sum w[n], drawing the same number.
-inline std::uint32_t pick_weighted(const double* w, std::uint32_t n, Rng rng) {
+// Pass::pick() for constant weights w[0..n) with their sum w[n], drawing the same number and
+// taking the same alternative: the first k with u < w[k], u decreased by each weight passed
+// (the same subtractions), else `fallback`, the last positive weight (rounding left u at the
+// top end). Written without a branch on u: the draw is random, so a branch on it would be
+// mispredicted about every other module.
+inline std::uint32_t pick_weighted(const double* w, std::uint32_t n, std::uint32_t fallback,
+                                   Rng rng) {
   double u = rng.uniform01() * w[n];
-  for (std::uint32_t k = 0; k < n; ++k) {
-    if (u < w[k]) return k;
-    u -= w[k];
+  std::uint64_t below = 0;  // bit j: u < w[j] after the weights before j were subtracted
+  for (std::uint32_t j = 0; j < n; ++j) {
+    below |= std::uint64_t(u < w[j]) << j;
+    u -= w[j];
   }
-  for (std::uint32_t k = n; k-- > 0;) {
-    if (w[k] > 0) return k;  // rounding left u at the top end
-  }
-  return 0;
+  const auto k = std::uint32_t(std::countr_zero(below));  // 64 when no bit is set
+  return k < n ? k : fallback;
 }
 
 // Whether codes a and b always give the same value for the same slots: the same pure
@@ -141,10 +156,12 @@ struct ArgOp {
   double value = 0;
   ir::CodeId code = 0;
 };
+// The write sweep writes a successor's symbols and offsets in one loop and its arguments in
+// another, without a loop per module over its arguments.
 struct Successors {
   std::vector<std::uint32_t> first_module, first_arg;  // per alternative
   std::vector<ir::SymbolId> symbols;
-  std::vector<std::uint16_t> nargs;
+  std::vector<std::uint32_t> offsets;  // per module: the successor's arguments before it
   std::vector<ArgOp> args;
 
   explicit Successors(const ir::Grammar& g) {
@@ -155,7 +172,7 @@ struct Successors {
       for (std::uint32_t m = alt.succ_begin; m < alt.succ_end; ++m) {
         const ir::SuccModule& sm = g.successors[m];
         symbols.push_back(sm.symbol);
-        nargs.push_back(sm.nargs);
+        offsets.push_back(std::uint32_t(args.size()) - first);
         for (std::uint32_t k = 0; k < sm.nargs; ++k) args.push_back(op(g, sm.arg_begin + k, first));
       }
     }

@@ -2,9 +2,15 @@
 
 #include <cctype>
 #include <charconv>
+#include <cstdint>
 #include <cstdlib>
 #include <mutex>
 #include <new>
+
+#if defined(__linux__)
+#include <sys/mman.h>
+#include <unistd.h>
+#endif
 
 #include "core/number_text.h"
 
@@ -30,6 +36,41 @@ std::size_t size_class(std::size_t bytes) {
 
 }  // namespace
 
+// Large buffers (2 MB and more) freed by one derivation are kept for the next one, at most
+// kKept of them and an eighth of physical memory: a process that derives again (a
+// benchmark's repeats, an editor's live preview, a search over grammars) then writes to pages it
+// already has instead of the kernel supplying fresh zeroed ones, about a microsecond per 4 KB
+// page (docs/engine.md, "The string"). A kept buffer's pages are given back lazily (MADV_FREE):
+// the kernel may take them when it runs short of memory, and reading one then gives zeros, which
+// does not matter because every element is written before it is read.
+namespace {
+
+Kept kept_large[kKept];
+std::size_t kept_large_bytes = 0;
+
+std::size_t large_keep_limit() {
+#if defined(__linux__)
+  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+  if (pages > 0 && page > 0) return std::size_t(pages) * std::size_t(page) / 8;
+#endif
+  return 0;
+}
+
+// Gives the whole pages inside [p, p + bytes) back lazily.
+void free_lazily(void* p, std::size_t bytes) {
+#if defined(__linux__)
+  const auto page = std::uintptr_t(sysconf(_SC_PAGESIZE));
+  const auto b = (std::uintptr_t(p) + page - 1) & ~(page - 1);
+  const auto e = (std::uintptr_t(p) + bytes) & ~(page - 1);
+  if (e > b) madvise(reinterpret_cast<void*>(b), e - b, MADV_FREE);
+#else
+  (void)p;
+  (void)bytes;
+#endif
+}
+
+}  // namespace
+
 void* allocate_buffer(std::size_t bytes) {
   if (bytes < kLargeBuffer) {
     const std::size_t c = size_class(bytes);
@@ -47,6 +88,22 @@ void* allocate_buffer(std::size_t bytes) {
     if (!p) throw std::bad_alloc();
     return p;
   }
+  {
+    // The smallest kept buffer that holds `bytes` and is at most twice as large.
+    std::lock_guard<std::mutex> lock(kept_mutex);
+    Kept* best = nullptr;
+    for (Kept& k : kept_large) {
+      if (k.p && k.bytes >= bytes && k.bytes / 2 <= bytes && (!best || k.bytes < best->bytes)) {
+        best = &k;
+      }
+    }
+    if (best) {
+      void* p = best->p;
+      kept_large_bytes -= best->bytes;
+      best->p = nullptr;
+      return p;
+    }
+  }
   void* p = std::malloc(bytes);
   if (!p) throw std::bad_alloc();
   return p;
@@ -62,8 +119,32 @@ void free_buffer(void* p, std::size_t bytes) noexcept {
         return;
       }
     }
+  } else {
+    static const std::size_t limit = large_keep_limit();
+    std::lock_guard<std::mutex> lock(kept_mutex);
+    if (kept_large_bytes + bytes <= limit) {
+      for (Kept& k : kept_large) {
+        if (!k.p) {
+          free_lazily(p, bytes);
+          k = {p, bytes};  // at least `bytes`: the buffer it was allocated as may be larger
+          kept_large_bytes += bytes;
+          return;
+        }
+      }
+    }
   }
   std::free(p);
+}
+
+void release_kept_buffers() noexcept {
+  std::lock_guard<std::mutex> lock(kept_mutex);
+  for (Kept* list : {kept, kept_large}) {
+    for (int k = 0; k < kKept; ++k) {
+      if (list[k].p) std::free(list[k].p);
+      list[k] = {};
+    }
+  }
+  kept_large_bytes = 0;
 }
 
 namespace {

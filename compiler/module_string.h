@@ -16,11 +16,14 @@
 
 namespace ramus {
 
-// Buffers of 64 KB and more come from here. Below 2 MB a few freed buffers are kept for the
-// next pass or derivation instead of going back to the system, which hands them out again as
-// fresh pages, one page fault each (docs/engine.md, "The string").
+// Buffers of 64 KB and more come from here. A few freed buffers are kept for the next pass or
+// derivation instead of going back to the system, which hands them out again as fresh pages,
+// one page fault each (docs/engine.md, "The string"): below 2 MB up to 8 (16 MB), from 2 MB
+// up to 8 and an eighth of physical memory, whose pages the kernel may take back meanwhile.
 void* allocate_buffer(std::size_t bytes);
 void free_buffer(void* p, std::size_t bytes) noexcept;
+// Gives every kept buffer back to the system (a long-lived process done deriving may call it).
+void release_kept_buffers() noexcept;
 inline constexpr std::size_t kLargeBuffer = std::size_t(2) << 20;
 inline constexpr std::size_t kMidBuffer = std::size_t(64) << 10;
 

@@ -58,3 +58,39 @@ TEST_CASE("module string: more than 64 parameters are refused", "[module_string]
   CHECK_THROWS_AS(s.push(ir::SymbolId(20), p.data(), 65), std::length_error);
   CHECK(s.size() == 1);
 }
+
+// Freed buffers of 2 MB and more are kept for the next derivation (module_string.h): the next
+// request that fits one (and needs at least half of it) gets it back instead of fresh pages,
+// with its contents writable; a much smaller request does not take it.
+TEST_CASE("module string: a freed large buffer serves the next derivation", "[module_string]") {
+  release_kept_buffers();  // whatever earlier tests left
+  const std::size_t big = std::size_t(24) << 20;
+  auto* p = static_cast<unsigned char*>(allocate_buffer(big));
+  p[0] = 1;
+  p[big - 1] = 2;
+  free_buffer(p, big);
+  void* small = allocate_buffer(big / 3);  // less than half: not the kept buffer
+  CHECK(small != p);
+  auto* q = static_cast<unsigned char*>(allocate_buffer(big - 4096));
+  CHECK(q == p);
+  q[0] = 3;  // kept pages were given back lazily: writing them again works
+  q[big - 4097] = 4;
+  CHECK(q[0] == 3);
+  CHECK(q[big - 4097] == 4);
+  free_buffer(q, big - 4096);
+  free_buffer(small, big / 3);
+
+  // A string filled after its arrays were kept by an earlier one reads back what was written.
+  ModuleString a;
+  a.resize_for_fill(1u << 20, 1u << 20);
+  a = ModuleString();
+  ModuleString b;
+  b.resize_for_fill(1u << 20, 1u << 20);
+  for (std::size_t i = 0; i < b.size(); ++i) {
+    b.symbols_data()[i] = ir::SymbolId(i % 7);
+    b.set_begin(i, std::uint32_t(i));
+    b.params_data()[i] = double(i);
+  }
+  CHECK(b.symbol(12345) == 12345 % 7);
+  CHECK(b.param(1048575, 0) == 1048575.0);
+}

@@ -2,7 +2,9 @@
 // seed only -- not on the thread count -- and ABOP 1.27's invariant holds for every draw.
 #include <catch2/catch.hpp>
 #include <map>
+#include <vector>
 
+#include "compiler/derive_plan.h"
 #include "compiler/expr_vm.h"
 #include "engine_helpers.h"
 
@@ -95,4 +97,46 @@ TEST_CASE("stochastic: a pass's hashed stream prefix gives Rng::stream", "[stoch
       }
     }
   }
+}
+
+// derive_plan::pick_weighted (the constant-weight path, without a branch on the draw) must take
+// the alternative the sequential scan of Pass::pick takes for every draw: the first k with
+// u < w[k] after the weights before it were subtracted, else the last positive weight.
+TEST_CASE("stochastic: the branch-free weighted pick takes the scan's alternative",
+          "[stochastic]") {
+  auto scan = [](const std::vector<double>& w, double sum, Rng rng) {
+    double u = rng.uniform01() * sum;
+    for (std::uint32_t k = 0; k < w.size(); ++k) {
+      if (u < w[k]) return k;
+      u -= w[k];
+    }
+    for (std::uint32_t k = std::uint32_t(w.size()); k-- > 0;) {
+      if (w[k] > 0) return k;
+    }
+    return 0u;
+  };
+  const std::vector<std::vector<double>> cases = {
+      {0.33, 0.33, 0.34}, {0.5, 0.5}, {0, 1, 0}, {1, 0}, {0.1, 0.2, 0.3, 0.4, 1e-300, 0}, {3}};
+  for (const auto& w : cases) {
+    std::vector<double> ws = w;
+    double sum = 0;
+    for (double v : w) sum += v;
+    ws.push_back(sum);
+    const auto n = std::uint32_t(w.size());
+    const std::uint32_t fallback = derive_plan::last_positive(ws.data(), n);
+    std::map<std::uint32_t, int> seen;
+    for (std::uint64_t b = 0; b < 20000; ++b) {
+      const Rng rng = Rng::stream(11, 512, b);
+      const std::uint32_t k = derive_plan::pick_weighted(ws.data(), n, fallback, rng);
+      REQUIRE(k == scan(w, sum, rng));
+      ++seen[k];
+    }
+    for (std::uint32_t k = 0; k < n; ++k) {
+      CHECK((seen[k] == 0 || w[k] > 0));           // a zero weight is never taken
+      if (w[k] >= 0.01 * sum) CHECK(seen[k] > 0);  // nor is a weight of 1e-300 in 20000 draws
+    }
+  }
+  // A draw whose u passes every weight (rounding at the top end) takes the fallback.
+  const double top[] = {0.25, 0.0, 0.25, 0.0, 0.25};  // sum 0.25 + 0.25 < u
+  CHECK(derive_plan::last_positive(top, 4) == 2);
 }
