@@ -1,6 +1,9 @@
 // The ramus side of bench/lsystem_vs_lindenmayer.sh: derives one of the benchmark systems and
 // prints what the script compares (the same systems as bench/lindenmayer_runner.js).
-// usage: bench_lsystem CASE N [THREADS [REPEAT [--print]]]
+// usage: bench_lsystem CASE N [THREADS [REPEAT [--print | --warmup]]]
+//   --warmup derives once before the REPEAT timed runs: every timed run then finds the pages
+//   and caches a long-running program has (the steady state); without it the first timed run
+//   pays for the process's fresh memory.
 //   length L / modules_total T (sum of the lengths after each step) / seconds S (derivation,
 //   wall clock, mean of REPEAT runs) / cpu_seconds C (user + system time of all threads, mean) /
 //   user_seconds U / system_seconds Y (the two parts of C: the engine's own work, and the kernel's
@@ -67,7 +70,7 @@ CpuTime cpu_time() {
 
 int main(int argc, char** argv) {
   if (argc < 3) {
-    std::fprintf(stderr, "usage: bench_lsystem CASE N [THREADS [REPEAT [--print]]]\n");
+    std::fprintf(stderr, "usage: bench_lsystem CASE N [THREADS [REPEAT [--print | --warmup]]]\n");
     return 2;
   }
   const char* src = source_of(argv[1]);
@@ -89,8 +92,15 @@ int main(int argc, char** argv) {
   d.threads = argc > 3 ? std::atoi(argv[3]) : 0;
   d.max_modules = 1'000'000'000;
   const int repeat = argc > 4 ? std::max(1, std::atoi(argv[4])) : 1;
+  const bool print = argc > 5 && std::strcmp(argv[5], "--print") == 0;
+  const bool warmup = argc > 5 && std::strcmp(argv[5], "--warmup") == 0;
+  if (argc > 5 && !print && !warmup) {
+    std::fprintf(stderr, "bench_lsystem: unknown option %s\n", argv[5]);
+    return 2;
+  }
   ramus::DeriveStats st;
   ramus::ModuleString s;
+  if (warmup) s = ramus::derive(g, d, &st);
   double wall = 0, user = 0, system = 0;
   for (int r = 0; r < repeat; ++r) {
     s = ramus::ModuleString();
@@ -122,7 +132,7 @@ int main(int argc, char** argv) {
     std::printf("block_offset_bytes_per_module %.4f\n", 4.0 / double(1u << ramus::kBlockShift));
   }
   std::printf("peak_rss_kb %ld\n", ru.ru_maxrss);
-  if (argc > 5 && std::strcmp(argv[5], "--print") == 0) {
+  if (print) {
     std::printf("string %s\n", ramus::to_text(g, s).c_str());
   }
   return 0;

@@ -16,6 +16,9 @@ packages=(
   # em++ (3.1.6, with its prebuilt libc/libc++): the runtime as WebAssembly (runtime/wasm/),
   # grown in headless Chromium by tests/runtime/test_wasm.cpp
   emscripten
+  # clang with its sanitizer and libFuzzer runtimes: CI's ASan+UBSan build and the clang side of
+  # the byte comparison (scripts/ci-extra.sh), and the fuzz preset
+  clang libclang-rt-14-dev
 )
 missing=()
 for p in "${packages[@]}"; do
