@@ -87,7 +87,8 @@ std::size_t place_forks(Bsg& b, std::vector<std::uint8_t>& fitted, double spacin
     if (ch[f].empty()) continue;
     const std::uint32_t main = heaviest(f, kNone);
     for (std::uint32_t c : std::vector<std::uint32_t>(ch[f])) {
-      if (!fitted[c]) continue;
+      // (A split of the stem's first edge may have given c a new parent already.)
+      if (!fitted[c] || b.parent[c] != f) continue;
       const bool side = c != main;
       // The branch's axis: from c to the farthest fitted node of its first few along its
       // heaviest chain, at least a radius (and two spacings) away.

@@ -73,3 +73,38 @@ TEST_CASE("fork placement: unfitted limbs and forks already on the axis stay", "
   std::vector<std::uint8_t> all(c.size(), 1);
   CHECK(place_forks(c, all, 0.02) == 0);
 }
+
+TEST_CASE("fork placement: a limb whose axis meets the stem between two nodes gets a new fork",
+          "[reconstruct]") {
+  // The limb's nodes come before the stem's continuation (the fork's children in that order),
+  // and its axis meets the stem at z = 1.6, between the stem nodes at 1.5 (the fork) and 1.75.
+  Bsg b;
+  std::uint32_t fork = add(b, {0, 0, 0}, kNone, 0.2);
+  for (int k = 1; k <= 6; ++k) fork = add(b, {0, 0, 0.25 * k}, fork, 0.2);
+  const Eigen::Vector3d d(std::sin(40 * M_PI / 180), 0, std::cos(40 * M_PI / 180));
+  std::uint32_t up = fork;
+  for (int k = 0; k < 4; ++k)
+    up = add(b, Eigen::Vector3d(0, 0, 1.6) + (0.3 + 0.3 * k) * d, up, 0.1);
+  up = fork;
+  for (int k = 7; k <= 10; ++k) up = add(b, {0, 0, 0.25 * k}, up, 0.2);
+  const std::size_t before = b.size();
+  std::vector<std::uint8_t> fitted(b.size(), 1);
+  CHECK(place_forks(b, fitted, 0.02) == 1);
+  REQUIRE(b.size() == before + 1);
+  REQUIRE(fitted.size() == b.size());
+  std::uint32_t limb = kNone, split = kNone;
+  for (std::uint32_t v = 0; v < b.size(); ++v) {
+    if ((b.pos[v] - (Eigen::Vector3d(0, 0, 1.6) + 0.3 * d)).norm() < 1e-9) limb = v;
+    if ((b.pos[v] - Eigen::Vector3d(0, 0, 1.6)).norm() < 0.01) split = v;
+  }
+  REQUIRE(limb != kNone);
+  REQUIRE(split != kNone);
+  CHECK(b.parent[limb] == split);
+  for (std::uint32_t v = 1; v < b.size(); ++v) CHECK(b.parent[v] < v);
+  // The stem still runs through the new node: 1.5 -> 1.6 -> 1.75.
+  std::size_t stem_children = 0;
+  for (std::uint32_t v = 0; v < b.size(); ++v) {
+    if (b.parent[v] == split && std::abs(b.pos[v].x()) < 1e-9) ++stem_children;
+  }
+  CHECK(stem_children == 1);
+}
