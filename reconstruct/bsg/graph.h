@@ -1,5 +1,5 @@
 // Building the neighbourhood graph of 4.1: voxel merging, k nearest neighbours weighted by
-// squared distance, and bridging of gaps between components.
+// squared distance, connected components (bridge.h joins them).
 #pragma once
 
 #include <Eigen/Core>
@@ -30,10 +30,5 @@ void contract(Graph& graph, int steps);
 
 // Connected component of every vertex (labels 0..n-1 in order of first vertex).
 std::vector<std::uint32_t> components(const Graph& graph, std::uint32_t* count = nullptr);
-
-// Bridges gaps left by occlusion: repeatedly joins each component not reachable from a root to
-// the reachable part by its closest pair of vertices, smallest gaps first, as long as the gap is
-// at most max_gap. Returns the number of bridges added.
-std::size_t bridge_gaps(Graph& graph, const std::vector<std::uint32_t>& roots, double max_gap);
 
 }  // namespace ramus::bsg

@@ -7,9 +7,11 @@
 
 #include "reconstruct/bsg/axis_projection.h"
 #include "reconstruct/bsg/bases.h"
+#include "reconstruct/bsg/bridge.h"
 #include "reconstruct/bsg/centre_line.h"
 #include "reconstruct/bsg/finite_points.h"
 #include "reconstruct/bsg/forest.h"
+#include "reconstruct/bsg/fork_placement.h"
 #include "reconstruct/bsg/graph.h"
 #include "reconstruct/bsg/inflate.h"
 #include "reconstruct/bsg/kdtree.h"
@@ -104,7 +106,10 @@ void centre_tree(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
   const std::vector<double> weight(counts.begin(), counts.end());
   const CentreLineResult fit = centre_line(b.pos, b.parent, b.radius, samples, weight, cp);
   smooth_fitted_radii(b.parent, fit, b.radius);
-  if (fit.fitted_count > 0) drop_branches_inside_stems(b, fit.fitted, voxel);
+  if (fit.fitted_count == 0) return;
+  std::vector<std::uint8_t> fitted = fit.fitted;
+  place_forks(b, fitted, voxel);
+  drop_branches_inside_stems(b, fitted, voxel);
 }
 
 }  // namespace
@@ -168,7 +173,6 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
     roots = root_vertices(graph, index, bases, root_reach);
   }
   const double max_gap = o.max_gap > 0 ? o.max_gap : std::max(0.08 * scale.height, 3 * scale.voxel);
-  res.counts.bridged_gaps = bridge_gaps(graph, roots, max_gap);
   const std::vector<Eigen::Vector3d> sample_pos = graph.pos;
   if (o.axis_levels > 0) {
     AxisProjectionParams ap;
@@ -177,6 +181,10 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
     ap.passes = o.axis_passes;
     project_to_axes(graph, scale.voxel, ap);
   }
+  // Gaps are bridged between the projected samples: a gap is then measured between branch axes,
+  // so the continuation of a fragment's own branch is nearer than the bark of a neighbouring one
+  // (docs/reconstruction.md, The pipeline, step 3).
+  res.counts.bridged_gaps = bridge_gaps(graph, roots, max_gap);
   contract(graph, std::max(0, o.contraction_steps));
   res.counts.graph_vertices = graph.size();
   res.counts.graph_edges = graph.edge_count();

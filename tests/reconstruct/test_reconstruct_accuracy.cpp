@@ -178,11 +178,13 @@ TEST_CASE("reconstruct accuracy: thick tree, three stations: nodes on the axes",
   CHECK(b.at_radius.centre_error_median > 2 * a.centre_error_median);
 }
 
-// One station sees half of every stem. Measured: precision / recall within 2 x radius 0.964 /
-// 0.798 (the occluded limbs are missing), median error / radius 0.121 / 0.194 / 0.061 in the
-// classes 5-10 / 10-20 / 20-40 cm over all samples, 0.072 / 0.086 / 0.061 over the found ones.
+// One station sees half of every stem. Measured: precision / recall within 2 x radius 0.965 /
+// 0.798 (the occluded limbs are missing), median error / radius 0.101 / 0.108 / 0.047 in the
+// classes 5-10 / 10-20 / 20-40 cm over all samples, 0.059 / 0.061 / 0.047 over the found ones.
 // Cross-sections alone left the limbs at 0.60 / 0.28 (found 0.43 / 0.135): the chain cylinders
-// and bridges (chain_cylinders.h) put them on their axes.
+// and bridges (chain_cylinders.h) put them on their axes; before the forks were placed where
+// the axes meet (fork_placement.h) the 10-20 cm class was at 0.194 over all samples, its limbs
+// hung from the crotches.
 TEST_CASE("reconstruct accuracy: thick tree, one station: trunk and limbs on their axes",
           "[accuracy]") {
   const Skeleton truth = test::thick_tree(5, 8.0, 0.3);
@@ -195,7 +197,6 @@ TEST_CASE("reconstruct accuracy: thick tree, one station: trunk and limbs on the
   CHECK(a.precision >= 0.95);
   CHECK(a.recall >= 0.75);
   check_centre_classes(a, 0.05, 0.15, true);
-  check_centre_classes(a, 0.2, 0.15, false);
-  // Over all samples the 10-20 cm class counts a limb hidden behind the trunk.
-  check_centre_classes(a, 0.05, 0.25, false);
+  // Over all samples too, a limb hidden behind the trunk included.
+  check_centre_classes(a, 0.05, 0.15, false);
 }

@@ -1,6 +1,5 @@
 // The stages of the reconstruction one by one, on graphs small enough to check by hand.
 #include <catch2/catch.hpp>
-
 #include <cmath>
 
 #include "reconstruct/bsg/forest.h"
@@ -119,22 +118,4 @@ TEST_CASE("reconstruct stages: Dijkstra from two roots splits a line between the
   const Bsg t0 = extract_tree(g, f, 0, roots);
   CHECK(t0.size() == 5);
   for (std::size_t v = 1; v < t0.size(); ++v) CHECK(t0.parent[v] < v);
-}
-
-TEST_CASE("reconstruct stages: gaps up to max_gap are bridged, farther ones are not",
-          "[reconstruct]") {
-  std::vector<Eigen::Vector3d> pts;
-  for (int i = 0; i < 5; ++i) pts.emplace_back(0.1 * i, 0, 0);
-  for (int i = 0; i < 5; ++i) pts.emplace_back(1.0 + 0.1 * i, 0, 0);  // gap of 0.6
-  for (int i = 0; i < 5; ++i) pts.emplace_back(5.0 + 0.1 * i, 0, 0);  // gap of 3.6
-  std::vector<std::uint32_t> pv;
-  Graph g = voxelize(pts, std::vector<std::uint8_t>(pts.size(), 1), 0.05, pv);
-  link_nearest(g, 2);
-  std::uint32_t n = 0;
-  components(g, &n);
-  REQUIRE(n == 3);
-  CHECK(bridge_gaps(g, {pv[0]}, 1.0) == 1);
-  const Forest f = shortest_path_forest(g, {pv[0]});
-  CHECK(f.tree[pv[9]] == 0);
-  CHECK(f.tree[pv[10]] == kNone);
 }
