@@ -58,7 +58,7 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
     const double reach = std::max(2.5 * r0, 5 * p.spacing);
     const double half = thicken * std::max(0.3 * r0, 1.5 * p.spacing);
     near.clear();
-    index.within(x, std::sqrt(reach * reach + half * half), near);
+    index.within_slab(x, std::sqrt(reach * reach + half * half), d, half, near);
     pts.clear(), w.clear();
     for (std::uint32_t i : near) {
       const Eigen::Vector3d q = samples[i] - x;
