@@ -140,11 +140,12 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
   const double tau = 2.5 * std::max(noise, 1e-12);
   std::vector<CircleFit> starts{f};
   {
+    // The keys are computed once (the sort compares each point's about 2 log n times).
     std::vector<std::size_t> idx(n);
-    for (std::size_t i = 0; i < n; ++i) idx[i] = i;
-    std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
-      return pts[a].squaredNorm() < pts[b].squaredNorm();
-    });
+    std::vector<double> key(n);
+    for (std::size_t i = 0; i < n; ++i) idx[i] = i, key[i] = pts[i].squaredNorm();
+    std::sort(idx.begin(), idx.end(),
+              [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
     std::vector<Eigen::Vector2d> near;
     std::vector<double> near_w;
     for (std::size_t k = 0; k < std::max<std::size_t>(3, n / 2); ++k) {
@@ -166,7 +167,7 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
     if (score > best) best = score, f = s;
   }
   if (!f.valid) return f;
-  std::vector<double> e(n), rw(n, 1.0), len(n);
+  std::vector<double> e(n), len(n);
   Eigen::Vector2d c = f.centre;
   double r = f.radius, scale = 0;
   // The scale comes from the points near the current circle (within 4 tau), so the points of
@@ -186,17 +187,15 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
   for (int it = 0; it < iterations; ++it) {
     // Huber for the first third (a convex start), Tukey's biweight after (outliers get weight 0).
     const bool tukey = it >= iterations / 3;
-    for (std::size_t i = 0; i < n; ++i) {
-      rw[i] = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
-    }
     Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
     Eigen::Vector3d jte = Eigen::Vector3d::Zero();
     for (std::size_t i = 0; i < n; ++i) {
-      if (rw[i] <= 0 || !(len[i] > 0)) continue;
+      const double rw = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
+      if (rw <= 0 || !(len[i] > 0)) continue;
       const Eigen::Vector2d d = pts[i] - c;
       const Eigen::Vector3d j(-d.x() / len[i], -d.y() / len[i], -1.0);
-      jtj += rw[i] * j * j.transpose();
-      jte += rw[i] * j * e[i];
+      jtj += rw * j * j.transpose();
+      jte += rw * j * e[i];
     }
     jtj.diagonal() *= 1.0 + 1e-9;
     const Eigen::Vector3d step = jtj.ldlt().solve(-jte);

@@ -43,7 +43,7 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   double r = c0.radius;
   // 2. Gauss-Newton over (direction tilt a, b; axis shift u, v; radius), re-linearised around
   // the current axis each step.
-  std::vector<double> e(n), rw(n), t(n), near_e;
+  std::vector<double> e(n), t(n), near_e;
   std::vector<Eigen::Vector3d> nrm(n);
   near_e.reserve(n);
   const double tau = 2.5 * std::max(noise, 1e-12);
@@ -64,18 +64,16 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   residuals();
   for (int it = 0; it < iterations; ++it) {
     const bool tukey = it >= iterations / 3;
-    for (std::size_t i = 0; i < n; ++i) {
-      rw[i] = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
-    }
     Eigen::Matrix<double, 5, 5> jtj = Eigen::Matrix<double, 5, 5>::Zero();
     Eigen::Matrix<double, 5, 1> jte = Eigen::Matrix<double, 5, 1>::Zero();
     for (std::size_t i = 0; i < n; ++i) {
-      if (rw[i] <= 0) continue;
+      const double rw = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
+      if (rw <= 0) continue;
       const double n1 = nrm[i].dot(e1), n2 = nrm[i].dot(e2);
       Eigen::Matrix<double, 5, 1> j;
       j << -t[i] * n1, -t[i] * n2, -n1, -n2, -1.0;
-      jtj += rw[i] * j * j.transpose();
-      jte += rw[i] * j * e[i];
+      jtj += rw * j * j.transpose();
+      jte += rw * j * e[i];
     }
     jtj.diagonal() *= 1.0 + 1e-6;
     const Eigen::Matrix<double, 5, 1> step = jtj.ldlt().solve(-jte);
