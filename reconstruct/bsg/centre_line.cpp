@@ -50,9 +50,10 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
   // The first disc is at most 20 spacings wide (a generous hint would gather thousands of points
   // for every node); it grows below when the circle reaches beyond it.
   double r0 = std::clamp(hint, 2 * p.spacing, 20 * p.spacing);
-  std::vector<std::uint32_t> near;
-  std::vector<Eigen::Vector2d> pts;
-  std::vector<double> w;
+  // Per-thread buffers: thousands of slabs are fitted, each in up to four attempts.
+  thread_local std::vector<std::uint32_t> near;
+  thread_local std::vector<Eigen::Vector2d> pts;
+  thread_local std::vector<double> w;
   double thicken = 1;  // a sparse slab (a thin branch far from the scanner) is taken thicker once
   for (int attempt = 0; attempt < 4; ++attempt) {
     const double reach = std::max(2.5 * r0, 5 * p.spacing);
