@@ -12,15 +12,6 @@ namespace {
 
 double weight_of(const std::vector<double>& w, std::size_t i) { return w.empty() ? 1.0 : w[i]; }
 
-// 2 pi minus the widest gap between the angles (sorted in place).
-double coverage_in_place(std::vector<double>& ang) {
-  if (ang.size() < 2) return 0.0;
-  std::sort(ang.begin(), ang.end());
-  double gap = ang.front() + 2 * M_PI - ang.back();
-  for (std::size_t i = 1; i < ang.size(); ++i) gap = std::max(gap, ang[i] - ang[i - 1]);
-  return 2 * M_PI - gap;
-}
-
 // The work space of fit_circle, one per thread: the centre lines fit thousands of slabs, and
 // allocating a dozen vectors for each fit was a few percent of the reconstruction's time.
 struct CircleScratch {
@@ -39,7 +30,7 @@ double arc_coverage(const std::vector<Eigen::Vector2d>& pts, const std::vector<c
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (use[i]) ang.push_back(std::atan2(pts[i].y() - c.y(), pts[i].x() - c.x()));
   }
-  return coverage_in_place(ang);
+  return angular_coverage(ang);
 }
 
 // The circle through three points (invalid when they are nearly collinear).
@@ -101,7 +92,13 @@ double robust_weight(double u, bool tukey) {
   return u <= 1.345 ? 1.0 : 1.345 / u;
 }
 
-double angular_coverage(std::vector<double> ang) { return coverage_in_place(ang); }
+double angular_coverage(std::vector<double>& ang) {
+  if (ang.size() < 2) return 0.0;
+  std::sort(ang.begin(), ang.end());
+  double gap = ang.front() + 2 * M_PI - ang.back();
+  for (std::size_t i = 1; i < ang.size(); ++i) gap = std::max(gap, ang[i] - ang[i - 1]);
+  return 2 * M_PI - gap;
+}
 
 CircleFit taubin_circle(const std::vector<Eigen::Vector2d>& pts,
                         const std::vector<double>& weights) {

@@ -32,7 +32,11 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   Eigen::Vector3d d = direction.normalized(), e1, e2;
   frame(d, e1, e2);
   // 1. The circle of the points seen along the start direction.
-  std::vector<Eigen::Vector2d> uv(n);
+  // Per-thread work space (chain_cylinders.h fits hundreds of pieces, twice each).
+  thread_local std::vector<Eigen::Vector2d> uv;
+  thread_local std::vector<double> e, t, near_e, ang, inlier_e;
+  thread_local std::vector<Eigen::Vector3d> nrm;
+  uv.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d q = pts[i] - start;
     uv[i] = {q.dot(e1), q.dot(e2)};
@@ -43,9 +47,7 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   double r = c0.radius;
   // 2. Gauss-Newton over (direction tilt a, b; axis shift u, v; radius), re-linearised around
   // the current axis each step.
-  std::vector<double> e(n), t(n), near_e;
-  std::vector<Eigen::Vector3d> nrm(n);
-  near_e.reserve(n);
+  e.resize(n), t.resize(n), nrm.resize(n);
   const double tau = 2.5 * std::max(noise, 1e-12);
   double scale = 0;
   auto residuals = [&] {
@@ -88,7 +90,7 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
     if (step.norm() < 1e-6 * std::max(std::abs(r), 1e-9)) break;
   }
   if (!(r > 0) || !q.allFinite() || !d.allFinite()) return out;
-  std::vector<double> ang, inlier_e;
+  ang.clear(), inlier_e.clear();
   double win = 0, wall = 0;
   std::array<bool, 8> bins{};
   for (std::size_t i = 0; i < n; ++i) {
@@ -104,8 +106,8 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   out.point = q;
   out.direction = d;
   out.radius = r;
-  out.residual = inlier_e.empty() ? scale : robust_scale(inlier_e);
-  out.coverage = angular_coverage(std::move(ang));
+  out.residual = inlier_e.empty() ? scale : robust_scale_in_place(inlier_e);
+  out.coverage = angular_coverage(ang);
   out.inlier_fraction = wall > 0 ? win / wall : 0;
   out.axial_fill = double(std::count(bins.begin(), bins.end(), true)) / 8.0;
   out.valid = true;
