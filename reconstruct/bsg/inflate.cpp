@@ -338,6 +338,9 @@ std::size_t prune_twigs(Bsg& bsg, double min_length) {
 int inflate(Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
             const std::vector<std::uint32_t>& counts, const InflateParams& params) {
   int rounds = 0;
+  // The mean sample distance of the BSG as it stands, when the last round computed it and
+  // nothing moved since (it depends on the positions and edges only): -1 otherwise.
+  double d_current = -1;
   // Collapsing moves vertices towards the branch axes, which raises d_avg, which widens the
   // cylinders; the loop runs to the fixed point where nothing more collapses (4.3).
   for (; rounds < 40; ++rounds) {
@@ -346,12 +349,18 @@ int inflate(Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
                              ? 0.0
                              : mean_sample_distance(bsg, samples, counts, params.edge_sample);
     assign_radii(bsg, d_avg, params.exponent, params.root_radius);
+    d_current = params.root_radius > 0 ? -1 : d_avg;
     if (collapse_overlaps(bsg, params.overlap, params.min_radius, params.tolerance) == 0) break;
+    d_current = -1;
   }
-  prune_twigs(bsg, params.min_twig);
+  if (prune_twigs(bsg, params.min_twig) > 0) d_current = -1;
   importance_weights(bsg, params.own_weight);
-  assign_radii(bsg, mean_sample_distance(bsg, samples, counts, params.edge_sample), params.exponent,
-               params.root_radius);
+  // With a measured root radius d_avg is not used (assign_radii), and not computed.
+  const double d_final = params.root_radius > 0 ? 0.0
+                         : d_current >= 0
+                             ? d_current
+                             : mean_sample_distance(bsg, samples, counts, params.edge_sample);
+  assign_radii(bsg, d_final, params.exponent, params.root_radius);
   return rounds;
 }
 
