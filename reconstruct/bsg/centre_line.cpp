@@ -50,15 +50,16 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
   // The first disc is at most 20 spacings wide (a generous hint would gather thousands of points
   // for every node); it grows below when the circle reaches beyond it.
   double r0 = std::clamp(hint, 2 * p.spacing, 20 * p.spacing);
-  std::vector<std::uint32_t> near;
-  std::vector<Eigen::Vector2d> pts;
-  std::vector<double> w;
+  // Per-thread buffers: thousands of slabs are fitted, each in up to four attempts.
+  thread_local std::vector<std::uint32_t> near;
+  thread_local std::vector<Eigen::Vector2d> pts;
+  thread_local std::vector<double> w;
   double thicken = 1;  // a sparse slab (a thin branch far from the scanner) is taken thicker once
   for (int attempt = 0; attempt < 4; ++attempt) {
     const double reach = std::max(2.5 * r0, 5 * p.spacing);
     const double half = thicken * std::max(0.3 * r0, 1.5 * p.spacing);
     near.clear();
-    index.within(x, std::sqrt(reach * reach + half * half), near);
+    index.within_slab(x, std::sqrt(reach * reach + half * half), d, half, near);
     pts.clear(), w.clear();
     for (std::uint32_t i : near) {
       const Eigen::Vector3d q = samples[i] - x;

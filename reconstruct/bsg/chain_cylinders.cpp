@@ -175,9 +175,9 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
     centre /= double(piece.nodes.size());
     const double half_length = 0.5 * (pos[last] - pos[before]).norm();
     double r0 = piece.radius;
-    std::vector<std::uint32_t> near;
-    std::vector<Eigen::Vector3d> pts;
-    std::vector<double> w;
+    thread_local std::vector<std::uint32_t> near;  // per-thread work space
+    thread_local std::vector<Eigen::Vector3d> pts;
+    thread_local std::vector<double> w;
     for (int attempt = 0; attempt < 6; ++attempt) {
       const double reach = std::max(2.5 * r0, 5 * p.spacing);
       const double span = std::max({half_length, r0, 3 * p.spacing});

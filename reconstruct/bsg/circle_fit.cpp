@@ -12,13 +12,25 @@ namespace {
 
 double weight_of(const std::vector<double>& w, std::size_t i) { return w.empty() ? 1.0 : w[i]; }
 
+// The work space of fit_circle, one per thread: the centre lines fit thousands of slabs, and
+// allocating a dozen vectors for each fit was a few percent of the reconstruction's time.
+struct CircleScratch {
+  std::vector<std::size_t> idx;
+  std::vector<double> key, near_w, e, len, near_e, inlier_e, ang;
+  std::vector<Eigen::Vector2d> near;
+  std::vector<char> in;
+  std::vector<CircleFit> starts;
+};
+thread_local CircleScratch scratch;
+
 double arc_coverage(const std::vector<Eigen::Vector2d>& pts, const std::vector<char>& use,
                     const Eigen::Vector2d& c) {
-  std::vector<double> ang;
+  std::vector<double>& ang = scratch.ang;
+  ang.clear();
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (use[i]) ang.push_back(std::atan2(pts[i].y() - c.y(), pts[i].x() - c.x()));
   }
-  return angular_coverage(std::move(ang));
+  return angular_coverage(ang);
 }
 
 // The circle through three points (invalid when they are nearly collinear).
@@ -80,7 +92,7 @@ double robust_weight(double u, bool tukey) {
   return u <= 1.345 ? 1.0 : 1.345 / u;
 }
 
-double angular_coverage(std::vector<double> ang) {
+double angular_coverage(std::vector<double>& ang) {
   if (ang.size() < 2) return 0.0;
   std::sort(ang.begin(), ang.end());
   double gap = ang.front() + 2 * M_PI - ang.back();
@@ -138,15 +150,19 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
   CircleFit f = taubin_circle(pts, weights);
   if (n < 3) return f;
   const double tau = 2.5 * std::max(noise, 1e-12);
-  std::vector<CircleFit> starts{f};
+  std::vector<CircleFit>& starts = scratch.starts;
+  starts.assign(1, f);
   {
-    std::vector<std::size_t> idx(n);
-    for (std::size_t i = 0; i < n; ++i) idx[i] = i;
-    std::sort(idx.begin(), idx.end(), [&](std::size_t a, std::size_t b) {
-      return pts[a].squaredNorm() < pts[b].squaredNorm();
-    });
-    std::vector<Eigen::Vector2d> near;
-    std::vector<double> near_w;
+    // The keys are computed once (the sort compares each point's about 2 log n times).
+    std::vector<std::size_t>& idx = scratch.idx;
+    std::vector<double>& key = scratch.key;
+    idx.resize(n), key.resize(n);
+    for (std::size_t i = 0; i < n; ++i) idx[i] = i, key[i] = pts[i].squaredNorm();
+    std::sort(idx.begin(), idx.end(),
+              [&](std::size_t a, std::size_t b) { return key[a] < key[b]; });
+    std::vector<Eigen::Vector2d>& near = scratch.near;
+    std::vector<double>& near_w = scratch.near_w;
+    near.clear(), near_w.clear();
     for (std::size_t k = 0; k < std::max<std::size_t>(3, n / 2); ++k) {
       near.push_back(pts[idx[k]]);
       if (!weights.empty()) near_w.push_back(weights[idx[k]]);
@@ -166,13 +182,13 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
     if (score > best) best = score, f = s;
   }
   if (!f.valid) return f;
-  std::vector<double> e(n), rw(n, 1.0), len(n);
+  std::vector<double>&e = scratch.e, &len = scratch.len;
+  e.resize(n), len.resize(n);
   Eigen::Vector2d c = f.centre;
   double r = f.radius, scale = 0;
   // The scale comes from the points near the current circle (within 4 tau), so the points of
   // another branch do not inflate it and turn themselves into inliers.
-  std::vector<double> near_e;
-  near_e.reserve(n);
+  std::vector<double>& near_e = scratch.near_e;
   auto residuals = [&] {
     near_e.clear();
     for (std::size_t i = 0; i < n; ++i) {
@@ -186,17 +202,15 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
   for (int it = 0; it < iterations; ++it) {
     // Huber for the first third (a convex start), Tukey's biweight after (outliers get weight 0).
     const bool tukey = it >= iterations / 3;
-    for (std::size_t i = 0; i < n; ++i) {
-      rw[i] = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
-    }
     Eigen::Matrix3d jtj = Eigen::Matrix3d::Zero();
     Eigen::Vector3d jte = Eigen::Vector3d::Zero();
     for (std::size_t i = 0; i < n; ++i) {
-      if (rw[i] <= 0 || !(len[i] > 0)) continue;
+      const double rw = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
+      if (rw <= 0 || !(len[i] > 0)) continue;
       const Eigen::Vector2d d = pts[i] - c;
       const Eigen::Vector3d j(-d.x() / len[i], -d.y() / len[i], -1.0);
-      jtj += rw[i] * j * j.transpose();
-      jte += rw[i] * j * e[i];
+      jtj += rw * j * j.transpose();
+      jte += rw * j * e[i];
     }
     jtj.diagonal() *= 1.0 + 1e-9;
     const Eigen::Vector3d step = jtj.ldlt().solve(-jte);
@@ -207,8 +221,10 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
     if (step.norm() < 1e-6 * std::max(r, 1e-9)) break;
   }
   // Inliers: within 2.5 robust scales of the circle (Tukey's weight is tiny beyond that).
-  std::vector<char> in(n, 0);
-  std::vector<double> inlier_e;
+  std::vector<char>& in = scratch.in;
+  in.assign(n, 0);
+  std::vector<double>& inlier_e = scratch.inlier_e;
+  inlier_e.clear();
   double win = 0, wall = 0;
   for (std::size_t i = 0; i < n; ++i) {
     wall += weight_of(weights, i);
@@ -220,7 +236,7 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
   }
   f.centre = c;
   f.radius = std::abs(r);
-  f.residual = inlier_e.empty() ? scale : robust_scale(inlier_e);
+  f.residual = inlier_e.empty() ? scale : robust_scale_in_place(inlier_e);
   f.coverage = arc_coverage(pts, in, c);
   f.inlier_fraction = wall > 0 ? win / wall : 0;
   f.valid = std::isfinite(f.radius) && c.allFinite() && f.radius > 0;

@@ -35,7 +35,8 @@ double robust_scale_in_place(std::vector<double>& e);
 double robust_weight(double u, bool tukey);
 
 // 2 pi minus the widest gap between the given angles (radians, any order): the arc they cover.
-double angular_coverage(std::vector<double> angles);
+// Sorts `angles` in place.
+double angular_coverage(std::vector<double>& angles);
 
 // Taubin's algebraic circle through weighted points (weights may be empty: all 1).
 CircleFit taubin_circle(const std::vector<Eigen::Vector2d>& pts,

@@ -32,7 +32,11 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   Eigen::Vector3d d = direction.normalized(), e1, e2;
   frame(d, e1, e2);
   // 1. The circle of the points seen along the start direction.
-  std::vector<Eigen::Vector2d> uv(n);
+  // Per-thread work space (chain_cylinders.h fits hundreds of pieces, twice each).
+  thread_local std::vector<Eigen::Vector2d> uv;
+  thread_local std::vector<double> e, t, near_e, ang, inlier_e;
+  thread_local std::vector<Eigen::Vector3d> nrm;
+  uv.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
     const Eigen::Vector3d q = pts[i] - start;
     uv[i] = {q.dot(e1), q.dot(e2)};
@@ -43,9 +47,7 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   double r = c0.radius;
   // 2. Gauss-Newton over (direction tilt a, b; axis shift u, v; radius), re-linearised around
   // the current axis each step.
-  std::vector<double> e(n), rw(n), t(n), near_e;
-  std::vector<Eigen::Vector3d> nrm(n);
-  near_e.reserve(n);
+  e.resize(n), t.resize(n), nrm.resize(n);
   const double tau = 2.5 * std::max(noise, 1e-12);
   double scale = 0;
   auto residuals = [&] {
@@ -64,18 +66,16 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   residuals();
   for (int it = 0; it < iterations; ++it) {
     const bool tukey = it >= iterations / 3;
-    for (std::size_t i = 0; i < n; ++i) {
-      rw[i] = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
-    }
     Eigen::Matrix<double, 5, 5> jtj = Eigen::Matrix<double, 5, 5>::Zero();
     Eigen::Matrix<double, 5, 1> jte = Eigen::Matrix<double, 5, 1>::Zero();
     for (std::size_t i = 0; i < n; ++i) {
-      if (rw[i] <= 0) continue;
+      const double rw = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
+      if (rw <= 0) continue;
       const double n1 = nrm[i].dot(e1), n2 = nrm[i].dot(e2);
       Eigen::Matrix<double, 5, 1> j;
       j << -t[i] * n1, -t[i] * n2, -n1, -n2, -1.0;
-      jtj += rw[i] * j * j.transpose();
-      jte += rw[i] * j * e[i];
+      jtj += rw * j * j.transpose();
+      jte += rw * j * e[i];
     }
     jtj.diagonal() *= 1.0 + 1e-6;
     const Eigen::Matrix<double, 5, 1> step = jtj.ldlt().solve(-jte);
@@ -90,7 +90,7 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
     if (step.norm() < 1e-6 * std::max(std::abs(r), 1e-9)) break;
   }
   if (!(r > 0) || !q.allFinite() || !d.allFinite()) return out;
-  std::vector<double> ang, inlier_e;
+  ang.clear(), inlier_e.clear();
   double win = 0, wall = 0;
   std::array<bool, 8> bins{};
   for (std::size_t i = 0; i < n; ++i) {
@@ -106,8 +106,8 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   out.point = q;
   out.direction = d;
   out.radius = r;
-  out.residual = inlier_e.empty() ? scale : robust_scale(inlier_e);
-  out.coverage = angular_coverage(std::move(ang));
+  out.residual = inlier_e.empty() ? scale : robust_scale_in_place(inlier_e);
+  out.coverage = angular_coverage(ang);
   out.inlier_fraction = wall > 0 ? win / wall : 0;
   out.axial_fill = double(std::count(bins.begin(), bins.end(), true)) / 8.0;
   out.valid = true;

@@ -27,38 +27,63 @@ struct Cylinder {
   }
 };
 
-// Fraction of the volume of `c` (its straight part) inside any of `others`, estimated on a
-// fixed, volume-uniform pattern of samples so that the result is deterministic.
-double covered_fraction(const Cylinder& c, const std::vector<Cylinder>& others) {
-  if (others.empty()) return 0.0;
+// The sample pattern of covers_more_than: on each of 4 cross-sections the centre and two rings
+// of 6 (radii sqrt(1/4), sqrt(3/4) of the radius: equal areas, the outer ring turned by 30
+// degrees), as unit offsets in the cross-section's frame, computed once.
+struct CoverPattern {
+  static constexpr std::array<double, 4> kT = {0.125, 0.375, 0.625, 0.875};
+  static constexpr int kPerSection = 13;
+  std::array<double, kPerSection> ring{}, cos{}, sin{};  // entry 0 is the centre
+  CoverPattern() {
+    static constexpr std::array<double, 2> kR = {0.5, 0.866};
+    int s = 1;
+    for (double rr : kR) {
+      for (int k = 0; k < 6; ++k, ++s) {
+        const double ang = (k + 0.5 * (rr > 0.6)) * (M_PI / 3);
+        ring[s] = rr, cos[s] = std::cos(ang), sin[s] = std::sin(ang);
+      }
+    }
+  }
+};
+
+// Whether more than `overlap` of the volume of `c` (its straight part) lies inside any of
+// `others`, estimated on a fixed, volume-uniform pattern of 52 samples so that the result is
+// deterministic. The count stops as soon as the answer is settled either way: inflation asks
+// this for every short edge in every round, and most answers are clear after a few samples.
+bool covers_more_than(const Cylinder& c, const std::vector<Cylinder>& others, double overlap) {
+  if (others.empty()) return 0.0 > overlap;
   const Eigen::Vector3d axis = c.b - c.a;
   const double len = axis.norm();
-  if (len <= 0) return 1.0;
+  if (len <= 0) return 1.0 > overlap;
+  static const CoverPattern pattern;
   const Eigen::Vector3d d = axis / len;
   const Eigen::Vector3d helper =
       std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
   const Eigen::Vector3d e1 = d.cross(helper).normalized(), e2 = d.cross(e1);
-  static constexpr std::array<double, 4> kT = {0.125, 0.375, 0.625, 0.875};
-  static constexpr std::array<double, 2> kR = {0.5, 0.866};  // sqrt(1/4), sqrt(3/4): equal areas
-  int inside = 0, total = 0;
-  for (double t : kT) {
+  constexpr int total = int(CoverPattern::kT.size()) * CoverPattern::kPerSection;
+  // The fraction inside/total is compared exactly as a full count would be.
+  auto more = [&](int inside) { return double(inside) / double(total) > overlap; };
+  int inside = 0, tested = 0;
+  for (double t : CoverPattern::kT) {
     const Eigen::Vector3d centre = c.a + t * axis;
     const double r = c.ra + t * (c.rb - c.ra);
-    auto test = [&](const Eigen::Vector3d& p) {
-      ++total;
+    for (int s = 0; s < CoverPattern::kPerSection; ++s) {
+      const Eigen::Vector3d p =
+          s == 0 ? centre
+                 : Eigen::Vector3d(centre + r * pattern.ring[s] *
+                                                (pattern.cos[s] * e1 + pattern.sin[s] * e2));
+      ++tested;
       for (const Cylinder& o : others) {
-        if (o.contains(p)) return void(++inside);
+        if (o.contains(p)) {
+          ++inside;
+          break;
+        }
       }
-    };
-    test(centre);
-    for (double rr : kR) {
-      for (int k = 0; k < 6; ++k) {
-        const double ang = (k + 0.5 * (rr > 0.6)) * (M_PI / 3);
-        test(centre + r * rr * (std::cos(ang) * e1 + std::sin(ang) * e2));
-      }
+      if (more(inside)) return true;
+      if (!more(inside + total - tested)) return false;
     }
   }
-  return double(inside) / double(total);
+  return more(inside);
 }
 
 // A mutable view of the BSG while edges are collapsed.
@@ -120,7 +145,7 @@ std::size_t remove_covered(Editable& e, std::uint32_t u, double overlap) {
       for (std::uint32_t s : e.ch[u]) {
         if (s != a) others.push_back(e.cyl(u, s));
       }
-      if (covered_fraction(e.cyl(u, a), others) > overlap) {
+      if (covers_more_than(e.cyl(u, a), others, overlap)) {
         e.merge(u, a);
         ++merged;
         again = true;
@@ -155,7 +180,7 @@ std::size_t collapse_degree2(Editable& e, std::uint32_t v, double overlap) {
     const Eigen::Vector3d ext = e.b.pos[v] + (e.b.pos[v] - e.b.pos[u]);
     const double rv = std::max(e.b.radius[v], e.min_radius);
     const Cylinder virt{e.b.pos[v], ext, rv, rv};
-    if (covered_fraction(e.cyl(v, w), {virt}) <= overlap) break;
+    if (!covers_more_than(e.cyl(v, w), {virt}, overlap)) break;
     // A branching w keeps its place (v simply disappears from a straight run); otherwise
     // branch points would creep down the trunk one collapse at a time.
     const bool keep_w = e.ch[w].size() != 1;
@@ -313,6 +338,9 @@ std::size_t prune_twigs(Bsg& bsg, double min_length) {
 int inflate(Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
             const std::vector<std::uint32_t>& counts, const InflateParams& params) {
   int rounds = 0;
+  // The mean sample distance of the BSG as it stands, when the last round computed it and
+  // nothing moved since (it depends on the positions and edges only): -1 otherwise.
+  double d_current = -1;
   // Collapsing moves vertices towards the branch axes, which raises d_avg, which widens the
   // cylinders; the loop runs to the fixed point where nothing more collapses (4.3).
   for (; rounds < 40; ++rounds) {
@@ -321,12 +349,18 @@ int inflate(Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
                              ? 0.0
                              : mean_sample_distance(bsg, samples, counts, params.edge_sample);
     assign_radii(bsg, d_avg, params.exponent, params.root_radius);
+    d_current = params.root_radius > 0 ? -1 : d_avg;
     if (collapse_overlaps(bsg, params.overlap, params.min_radius, params.tolerance) == 0) break;
+    d_current = -1;
   }
-  prune_twigs(bsg, params.min_twig);
+  if (prune_twigs(bsg, params.min_twig) > 0) d_current = -1;
   importance_weights(bsg, params.own_weight);
-  assign_radii(bsg, mean_sample_distance(bsg, samples, counts, params.edge_sample), params.exponent,
-               params.root_radius);
+  // With a measured root radius d_avg is not used (assign_radii), and not computed.
+  const double d_final = params.root_radius > 0 ? 0.0
+                         : d_current >= 0
+                             ? d_current
+                             : mean_sample_distance(bsg, samples, counts, params.edge_sample);
+  assign_radii(bsg, d_final, params.exponent, params.root_radius);
   return rounds;
 }
 

@@ -1,5 +1,7 @@
 #include "reconstruct/bsg/kdtree.h"
 
+#include <cmath>
+
 #include "reconstruct/bsg/bsg.h"
 
 namespace ramus::bsg {
@@ -70,12 +72,107 @@ std::size_t PointIndex::knn_within(const Eigen::Vector3d& q, std::size_t k, doub
   return n;
 }
 
+namespace {
+
+// nanoflann's radius result set, appending the indices straight to the caller's vector (the
+// library's collects (index, distance) pairs, which within() would copy once more).
+class AppendWithin {
+ public:
+  using DistanceType = double;
+  using IndexType = std::uint32_t;
+  AppendWithin(double radius2, std::vector<std::uint32_t>& out)
+      : out_(out), radius2_(radius2), start_(out.size()) {}
+  std::size_t size() const { return out_.size() - start_; }
+  bool full() const { return true; }
+  double worstDist() const { return radius2_; }
+  bool addPoint(double dist, std::uint32_t index) {
+    if (dist < radius2_) out_.push_back(index);
+    return true;
+  }
+
+ private:
+  std::vector<std::uint32_t>& out_;
+  double radius2_;
+  std::size_t start_;
+};
+
+}  // namespace
+
 void PointIndex::within(const Eigen::Vector3d& q, double radius,
                         std::vector<std::uint32_t>& out) const {
   if (size() == 0 || !(radius > 0)) return;
-  std::vector<std::pair<std::uint32_t, double>> found;
-  tree_->radiusSearch(q.data(), radius * radius, found, nanoflann::SearchParams(32, 0, false));
-  for (const auto& f : found) out.push_back(original(f.first));
+  const std::size_t start = out.size();
+  AppendWithin result(radius * radius, out);
+  tree_->findNeighbors(result, q.data(), nanoflann::SearchParams(32, 0, false));
+  if (!ids_.empty()) {
+    for (std::size_t i = start; i < out.size(); ++i) out[i] = ids_[out[i]];
+  }
+}
+
+void PointIndex::within_slab(const Eigen::Vector3d& q, double radius, const Eigen::Vector3d& d,
+                             double half, std::vector<std::uint32_t>& out) const {
+  if (size() == 0 || !(radius > 0)) return;
+  using Node = Tree::Node;
+  const double r2 = radius * radius;
+  const double r2_wide = r2 * (1 + 1e-9);
+  const double ad[3] = {std::abs(d.x()), std::abs(d.y()), std::abs(d.z())};
+  // Whether the cell [lo, hi] may hold a point of the ball and the slab (both widened).
+  auto may_hold = [&](const double* lo, const double* hi) {
+    double box2 = 0, s = 0, ext = 0;
+    for (int k = 0; k < 3; ++k) {
+      const double below = lo[k] - q[k], above = q[k] - hi[k];
+      const double gap = below > 0 ? below : (above > 0 ? above : 0.0);
+      box2 += gap * gap;
+      s += (0.5 * (lo[k] + hi[k]) - q[k]) * d[k];
+      ext += 0.5 * (hi[k] - lo[k]) * ad[k];
+    }
+    return box2 <= r2_wide && std::abs(s) - ext <= half + 1e-9 * (std::abs(s) + ext + half);
+  };
+  double lo[3], hi[3];
+  for (int k = 0; k < 3; ++k) lo[k] = tree_->root_bbox[k].low, hi[k] = tree_->root_bbox[k].high;
+  // nanoflann's order (Tree::searchLevel): at each split the child on the query's side first.
+  auto visit = [&](auto&& self, const Node* node) -> void {
+    if (!may_hold(lo, hi)) return;
+    if (node->child1 == nullptr && node->child2 == nullptr) {
+      for (auto i = node->node_type.lr.left; i < node->node_type.lr.right; ++i) {
+        const std::uint32_t a = tree_->vAcc[i];
+        const double* p = &coords_[3 * std::size_t(a)];
+        // nanoflann's L2_Simple_Adaptor::evalMetric, term by term.
+        double dist = 0;
+        for (int k = 0; k < 3; ++k) {
+          const double diff = q[k] - p[k];
+          dist += diff * diff;
+        }
+        if (!(dist < r2)) continue;
+        const double t = (p[0] - q[0]) * d[0] + (p[1] - q[1]) * d[1] + (p[2] - q[2]) * d[2];
+        if (std::abs(t) > half + 1e-9 * (std::abs(t) + half + radius)) continue;
+        out.push_back(original(a));
+      }
+      return;
+    }
+    const int idx = node->node_type.sub.divfeat;
+    const double val = q[idx];
+    const double divlow = node->node_type.sub.divlow, divhigh = node->node_type.sub.divhigh;
+    // child1 holds the points up to divlow, child2 those from divhigh.
+    auto child1 = [&] {
+      const double keep = hi[idx];
+      hi[idx] = divlow;
+      self(self, node->child1);
+      hi[idx] = keep;
+    };
+    auto child2 = [&] {
+      const double keep = lo[idx];
+      lo[idx] = divhigh;
+      self(self, node->child2);
+      lo[idx] = keep;
+    };
+    if ((val - divlow) + (val - divhigh) < 0) {
+      child1(), child2();
+    } else {
+      child2(), child1();
+    }
+  };
+  visit(visit, tree_->root_node);
 }
 
 double median_spacing(const std::vector<Eigen::Vector3d>& pts,

@@ -28,6 +28,13 @@ class PointIndex {
 
   // Every point within `radius` of q (original indices, unordered), appended to `out`.
   void within(const Eigen::Vector3d& q, double radius, std::vector<std::uint32_t>& out) const;
+  // The points of within(q, radius) that may lie in the slab |(p - q) . d| <= half (d a unit
+  // vector), in the order within() gives them: the same traversal, but cells that miss the slab
+  // are skipped. Points near the slab's faces may be included (the bounds are widened by a
+  // relative 1e-9); the caller applies its exact test. A cross-section's slab is a tenth of its
+  // ball, so this reads a fraction of the cells.
+  void within_slab(const Eigen::Vector3d& q, double radius, const Eigen::Vector3d& d, double half,
+                   std::vector<std::uint32_t>& out) const;
 
   // nanoflann's dataset interface.
   std::size_t kdtree_get_point_count() const { return size(); }
