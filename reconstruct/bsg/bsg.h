@@ -65,4 +65,13 @@ struct Bsg {
 // Children lists of a parent array (parents before children).
 std::vector<std::vector<std::uint32_t>> children_of(const std::vector<std::uint32_t>& parent);
 
+// Appends node v of `from` (every field) to `to` with the parent index `parent` of `to`.
+void append_node(Bsg& to, const Bsg& from, std::uint32_t v, std::uint32_t parent);
+
+// The nodes of `b` again in parent-first order: a depth-first walk from the root 0 visiting the
+// children of each node in the order of `children`. old_of, when given, receives the old index
+// of every new node.
+Bsg depth_first(const Bsg& b, const std::vector<std::vector<std::uint32_t>>& children,
+                std::vector<std::uint32_t>* old_of = nullptr);
+
 }  // namespace ramus::bsg

@@ -325,13 +325,8 @@ std::size_t drop_branches_inside_stems(Bsg& b, const std::vector<std::uint8_t>& 
   std::vector<std::uint32_t> local(n, kNone);
   for (std::uint32_t v = 0; v < n; ++v) {
     if (!alive[v]) continue;
-    local[v] = std::uint32_t(out.pos.size());
-    out.pos.push_back(b.pos[v]);
-    out.parent.push_back(b.parent[v] == kNone ? kNone : local[b.parent[v]]);
-    out.vertex.push_back(b.vertex[v]);
-    out.weight.push_back(b.weight[v]);
-    out.radius.push_back(b.radius[v]);
-    out.mass.push_back(b.mass[v]);
+    local[v] = std::uint32_t(out.size());
+    append_node(out, b, v, b.parent[v] == kNone ? kNone : local[b.parent[v]]);
   }
   b = std::move(out);
   return removed;

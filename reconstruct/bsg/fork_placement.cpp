@@ -37,24 +37,10 @@ Approach ray_segment(const Eigen::Vector3d& o, const Eigen::Vector3d& d, const E
 
 // Parent-first order again after re-attachments (a depth-first walk from the root).
 void reorder(Bsg& b, std::vector<std::uint8_t>& fitted) {
-  const auto ch = children_of(b.parent);
-  Bsg out;
-  std::vector<std::uint8_t> fit;
-  std::vector<std::uint32_t> stack{0}, local(b.size(), kNone);
-  while (!stack.empty()) {
-    const std::uint32_t v = stack.back();
-    stack.pop_back();
-    local[v] = std::uint32_t(out.pos.size());
-    out.pos.push_back(b.pos[v]);
-    out.parent.push_back(b.parent[v] == kNone ? kNone : local[b.parent[v]]);
-    out.vertex.push_back(b.vertex[v]);
-    out.weight.push_back(b.weight[v]);
-    out.radius.push_back(b.radius[v]);
-    out.mass.push_back(b.mass[v]);
-    fit.push_back(fitted[v]);
-    for (auto it = ch[v].rbegin(); it != ch[v].rend(); ++it) stack.push_back(*it);
-  }
-  b = std::move(out);
+  std::vector<std::uint32_t> old_of;
+  b = depth_first(b, children_of(b.parent), &old_of);
+  std::vector<std::uint8_t> fit(old_of.size());
+  for (std::size_t i = 0; i < old_of.size(); ++i) fit[i] = fitted[old_of[i]];
   fitted = std::move(fit);
 }
 

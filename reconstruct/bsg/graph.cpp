@@ -47,6 +47,31 @@ std::vector<std::vector<std::uint32_t>> children_of(const std::vector<std::uint3
   return ch;
 }
 
+void append_node(Bsg& to, const Bsg& from, std::uint32_t v, std::uint32_t parent) {
+  to.pos.push_back(from.pos[v]);
+  to.parent.push_back(parent);
+  to.vertex.push_back(from.vertex[v]);
+  to.weight.push_back(from.weight[v]);
+  to.radius.push_back(from.radius[v]);
+  to.mass.push_back(from.mass[v]);
+}
+
+Bsg depth_first(const Bsg& b, const std::vector<std::vector<std::uint32_t>>& children,
+                std::vector<std::uint32_t>* old_of) {
+  Bsg out;
+  if (old_of) old_of->clear();
+  std::vector<std::uint32_t> stack{0}, local(b.size(), kNone);
+  while (!stack.empty()) {
+    const std::uint32_t v = stack.back();
+    stack.pop_back();
+    local[v] = std::uint32_t(out.size());
+    append_node(out, b, v, b.parent[v] == kNone ? kNone : local[b.parent[v]]);
+    if (old_of) old_of->push_back(v);
+    for (auto it = children[v].rbegin(); it != children[v].rend(); ++it) stack.push_back(*it);
+  }
+  return out;
+}
+
 Graph voxelize(const std::vector<Eigen::Vector3d>& points, const std::vector<std::uint8_t>& keep,
                double voxel, std::vector<std::uint32_t>& point_vertex) {
   // Sorting (key, point) pairs instead of hashing keeps the vertex order independent of any

@@ -196,23 +196,7 @@ std::size_t collapse_degree2(Editable& e, std::uint32_t v, double overlap) {
 }
 
 // Re-indexes the surviving vertices in parent-first order.
-void compact(Editable& e) {
-  Bsg out;
-  std::vector<std::uint32_t> stack{0}, local(e.b.size(), kNone);
-  while (!stack.empty()) {
-    const std::uint32_t v = stack.back();
-    stack.pop_back();
-    local[v] = std::uint32_t(out.pos.size());
-    out.pos.push_back(e.b.pos[v]);
-    out.parent.push_back(e.b.parent[v] == kNone ? kNone : local[e.b.parent[v]]);
-    out.vertex.push_back(e.b.vertex[v]);
-    out.weight.push_back(e.b.weight[v]);
-    out.radius.push_back(e.b.radius[v]);
-    out.mass.push_back(e.b.mass[v]);
-    for (auto it = e.ch[v].rbegin(); it != e.ch[v].rend(); ++it) stack.push_back(*it);
-  }
-  e.b = std::move(out);
-}
+void compact(Editable& e) { e.b = depth_first(e.b, e.ch); }
 
 }  // namespace
 
