@@ -210,15 +210,15 @@ struct Pass {
     std::uint64_t m = e - b, p = in.begin(e) - in.begin(b), h = 0;  // wrap-around sums
     // The rewritten modules' offsets in the chunk, gathered without a branch per module: which
     // modules are copied follows the string's shape, which a stochastic grammar makes random.
-    std::uint16_t todo[kChunk];
-    std::size_t ntodo = 0;
+    std::uint16_t to_choose[kChunk];
+    std::size_t nchoose = 0;
     const std::uint8_t* rewritten = rewrites.data();
     for (std::size_t i = b; i < e; ++i) {
-      todo[ntodo] = std::uint16_t(i - b);
-      ntodo += rewritten[sym[i]];
+      to_choose[nchoose] = std::uint16_t(i - b);
+      nchoose += rewritten[sym[i]];
     }
-    for (std::size_t t = 0; t < ntodo; ++t) {
-      const std::size_t i = b + todo[t];
+    for (std::size_t t = 0; t < nchoose; ++t) {
+      const std::size_t i = b + to_choose[t];
       const SymbolPlan& pl = plan[sym[i]];
       const std::uint32_t np = std::uint16_t(low[i + 1] - low[i]);
       if (pl.fixed_for(np)) {

@@ -14,21 +14,7 @@ using namespace assets_test;
 namespace {
 
 bool run_impostors(const fs::path& page, Numbers& r) {
-  std::string out;
-  const int code = run_shell(
-      "node " + cli_test::shell_quote(RAMUS_SOURCE_DIR "/tests/assets/view_impostors.js") + " " +
-          cli_test::shell_quote(page.string()),
-      out);
-  if (code == 77) {
-    WARN("skipped: " << out);
-    return false;
-  }
-  INFO(out);
-  REQUIRE(code == 0);
-  const std::size_t at = out.find("{\"file\"");
-  REQUIRE(at != std::string::npos);
-  r = cli_test::json_line_numbers(out.substr(at, out.find('\n', at) - at));
-  return true;
+  return run_page_driver("view_impostors.js", page, r);
 }
 
 }  // namespace

@@ -13,21 +13,7 @@ namespace {
 
 // The page's numbers; false (after a warning) when Chromium cannot run here.
 bool open_view(const fs::path& page, Numbers& r) {
-  std::string out;
-  const int code =
-      run_shell("node " + cli_test::shell_quote(RAMUS_SOURCE_DIR "/tests/assets/open_view.js") +
-                    " " + cli_test::shell_quote(page.string()),
-                out);
-  if (code == 77) {
-    WARN("skipped: " << out);
-    return false;
-  }
-  INFO(out);
-  REQUIRE(code == 0);
-  const std::size_t at = out.find("{\"file\"");
-  REQUIRE(at != std::string::npos);
-  r = cli_test::json_line_numbers(out.substr(at, out.find('\n', at) - at));
-  return true;
+  return run_page_driver("open_view.js", page, r);
 }
 
 void check_upright(const Numbers& r) {

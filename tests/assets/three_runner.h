@@ -24,6 +24,27 @@ inline int run_shell(const std::string& cmd, std::string& out) {
   return cli_test::exit_code(pclose(pipe));
 }
 
+// Runs a page driver of tests/assets (`node SCRIPT PAGE`) on a page written by `ramus view` and
+// reads the JSON line it prints (it starts with {"file"); false (after a warning) when Chromium
+// cannot run on this machine.
+inline bool run_page_driver(const char* script, const fs::path& page, Numbers& r) {
+  std::string out;
+  const int code = run_shell(
+      "node " + cli_test::shell_quote(std::string(RAMUS_SOURCE_DIR "/tests/assets/") + script) +
+          " " + cli_test::shell_quote(page.string()),
+      out);
+  if (code == 77) {
+    WARN("skipped: " << out);
+    return false;
+  }
+  INFO(out);
+  REQUIRE(code == 0);
+  const std::size_t at = out.find("{\"file\"");
+  REQUIRE(at != std::string::npos);
+  r = cli_test::json_line_numbers(out.substr(at, out.find('\n', at) - at));
+  return true;
+}
+
 // One result per file; false (after a warning) when Chromium cannot run on this machine.
 inline bool load_in_three(const std::vector<fs::path>& files, std::vector<Numbers>& results) {
   std::string cmd =
