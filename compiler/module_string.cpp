@@ -43,8 +43,8 @@ std::size_t size_class(std::size_t bytes) {
 // already has instead of the kernel supplying fresh zeroed ones, about a microsecond per 4 KB
 // page (docs/engine.md, "The string"). A kept buffer stays resident while it is in use again and
 // again: giving its pages back lazily (MADV_FREE) as soon as it is kept made every page dearer
-// to write again (the kernel cleans and unmaps it from the TLB; writing it again cost ~0.8 ns
-// per module of a derivation, a third more, on the development machine). Only a buffer that no
+// to write again (the kernel cleans it and drops it from the TLB; on the development machine a
+// derivation of (b) in bench_lsystem took 2.6 instead of 1.8 ns a module). Only a buffer that no
 // request has taken for kIdleSeconds is given back lazily, checked whenever a large buffer is
 // kept or taken: the kernel may then take its pages when it runs short of memory, and reading
 // one gives zeros, which does not matter because every element is written before it is read.
