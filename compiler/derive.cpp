@@ -21,7 +21,6 @@ namespace {
 
 using derive_plan::ArgOp;
 using derive_plan::pick_weighted;
-using derive_plan::plan_symbols;
 using derive_plan::Successors;
 using derive_plan::SymbolPlan;
 
@@ -63,10 +62,16 @@ struct Pass {
   const ModuleString& in;
   const ContextTables* ctx;
   const PassInfo& info;
-  std::vector<SymbolPlan> plans;
-  std::vector<double> weights;  // SymbolPlan::Weighted
-  std::uint64_t stream = 0;     // stream_prefix(seed, key): each module's streams from it
-  Successors succ;
+  std::uint64_t stream;  // stream_prefix(seed, key): each module's streams from it
+  // What the pass planned from the grammar (derive_plan::PassPlan).
+  const std::vector<SymbolPlan>& plans;
+  const std::vector<double>& weights;  // SymbolPlan::Weighted
+  const Successors& succ;
+  // Per alternative + 1 (0: a copied module), the modules and parameters it writes (a copy
+  // writes its own parameter count instead of out_params[0]).
+  const std::vector<std::uint32_t>& out_mods;
+  const std::vector<std::uint32_t>& out_params;
+  const std::vector<std::uint8_t>& rewrites;  // per symbol: 1 unless its plan is Copy
   // Per chunk, for each module its symbol does not decide (in order): 0 copy, else
   // alternative + 1.
   std::vector<PodVector<std::uint32_t>>* choices = nullptr;
@@ -185,11 +190,6 @@ struct Pass {
   // Per-chunk output sizes (filled by choose_chunk, then prefix-summed into offsets).
   std::vector<std::uint64_t> mods, pars, hits;
 
-  // Per alternative + 1 (0: a copied module), the modules and parameters it writes (a copy
-  // writes its own parameter count instead of out_params[0]).
-  std::vector<std::uint32_t> out_mods, out_params;
-  std::vector<std::uint8_t> rewrites;  // per symbol: 1 unless its plan is Copy
-
   // First sweep over chunk c: choose the alternative of every module that needs a choice and
   // count the output: the chunk's own modules and parameters plus, per rewritten module, what
   // its successor writes more than itself, so that a copied module costs one test. The counts
@@ -302,9 +302,11 @@ struct Pass {
   }
 
   // Writes module i (parameters x) 's successor at output module o, parameter pofs; arguments
-  // draw from (seed, key, 2i+1).
-  void write(std::size_t i, std::uint32_t alt_id, const Out& w, std::size_t o, std::uint32_t pofs,
-             const double* x, double* slots) const {
+  // draw from (seed, key, 2i+1). Inlined into the write sweep's loop: out of line it costs
+  // (a) a fifth more per module (GCC's inliner left it out once the sweep itself was inlined).
+  [[gnu::always_inline]] inline void write(std::size_t i, std::uint32_t alt_id, const Out& w,
+                                           std::size_t o, std::uint32_t pofs, const double* x,
+                                           double* slots) const {
     const ir::Alternative& alt = g.alternatives[alt_id];
     const ir::Production& p = g.productions[alt.production];
     if (p.has_context()) {
@@ -412,10 +414,18 @@ void check_limits(const PassInfo& info, std::uint64_t modules, std::uint64_t par
 
 }  // namespace
 
+PassScratch::PassScratch() = default;
+PassScratch::~PassScratch() = default;
+
+// Asked once per process: sysconf(_SC_PHYS_PAGES) is a system call (sysinfo), which every pass
+// would otherwise pay.
 std::uint64_t default_memory_limit() {
-  const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
-  if (pages <= 0 || page <= 0) return 8ull << 30;
-  return std::uint64_t(double(pages) * double(page) * 0.8);
+  static const std::uint64_t limit = [] {
+    const long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    if (pages <= 0 || page <= 0) return std::uint64_t(8) << 30;
+    return std::uint64_t(double(pages) * double(page) * 0.8);
+  }();
+  return limit;
 }
 
 bool apply_pass(const ir::Grammar& g, ir::Kind kind, const ModuleString& in, ModuleString& out,
@@ -425,34 +435,29 @@ bool apply_pass(const ir::Grammar& g, ir::Kind kind, const ModuleString& in, Mod
   if (table.empty() || n == 0) return false;
   ContextTables ctx_tables;
   if (table.has_context) ctx_tables.build(in, g.ignored, table.has_left, table.has_right);
-  check_successor_arity(g);
+  PassScratch own;
+  PassScratch& scratch = info.scratch ? *info.scratch : own;
+  if (!scratch.plan || scratch.plan->grammar != &g) {
+    check_successor_arity(g);
+    scratch.plan = std::make_unique<derive_plan::PassPlan>(g);
+  }
+  const derive_plan::PassPlan::Table& planned = scratch.plan->table(kind);
   Pass pass{g,
             table,
             in,
             table.has_context ? &ctx_tables : nullptr,
             info,
-            {},
-            {},
             stream_prefix(info.seed, info.key),
-            Successors(g),
-            {},
-            {},
-            {},
-            {},
+            planned.plans,
+            planned.weights,
+            scratch.plan->succ,
+            scratch.plan->out_mods,
+            scratch.plan->out_params,
+            planned.rewrites,
+            &scratch.choices,
             {},
             {},
             {}};
-  pass.plans = plan_symbols(g, table, pass.weights);
-  for (const SymbolPlan& plan : pass.plans) pass.rewrites.push_back(plan.kind != SymbolPlan::Copy);
-  pass.out_mods.assign(1, 1);
-  pass.out_params.assign(1, 0);
-  for (const ir::Alternative& alt : g.alternatives) {
-    pass.out_mods.push_back(alt.succ_end - alt.succ_begin);
-    pass.out_params.push_back(alt.out_params);
-  }
-  PassScratch own;
-  PassScratch& scratch = info.scratch ? *info.scratch : own;
-  pass.choices = &scratch.choices;
 
   const std::size_t nchunks = (n + kChunk - 1) / kChunk;
   if (scratch.choices.size() < nchunks) scratch.choices.resize(nchunks);

@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -18,6 +19,10 @@
 #include "compiler/module_string.h"
 
 namespace ramus {
+
+namespace derive_plan {
+struct PassPlan;
+}
 
 struct DeriveError : std::runtime_error {
   using std::runtime_error::runtime_error;
@@ -50,7 +55,13 @@ ModuleString derive(const ir::Grammar& g, const DeriveOptions& options,
 // each chunk's modules that were not decided by their symbol alone, in module order (sized
 // without zero-filling: the choose sweep writes before it reads).
 struct PassScratch {
+  PassScratch();
+  ~PassScratch();
+  PassScratch(const PassScratch&) = delete;
+  PassScratch& operator=(const PassScratch&) = delete;
   std::vector<PodVector<std::uint32_t>> choices;
+  // What the passes plan from the grammar alone, made by the first pass (for its grammar).
+  std::unique_ptr<derive_plan::PassPlan> plan;
 };
 
 // What one pass needs to know besides the table.

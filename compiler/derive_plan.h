@@ -211,4 +211,38 @@ struct Successors {
   }
 };
 
+// Everything a pass plans from the grammar alone: the flattened successors, per alternative + 1
+// the modules and parameters it writes (0: a copied module, one module of its own parameters),
+// and per table its symbol plans. derive() plans once for all its passes, since a pass over a
+// short string would spend a good part of its time planning (a microsecond a pass).
+struct PassPlan {
+  struct Table {
+    bool planned = false;
+    std::vector<SymbolPlan> plans;
+    std::vector<double> weights;         // SymbolPlan::Weighted
+    std::vector<std::uint8_t> rewrites;  // per symbol: 1 unless its plan is Copy
+  };
+  const ir::Grammar* grammar;
+  Successors succ;
+  std::vector<std::uint32_t> out_mods{1}, out_params{0};
+  Table tables[3];  // per ir::Kind
+
+  explicit PassPlan(const ir::Grammar& g) : grammar(&g), succ(g) {
+    for (const ir::Alternative& alt : g.alternatives) {
+      out_mods.push_back(alt.succ_end - alt.succ_begin);
+      out_params.push_back(alt.out_params);
+    }
+  }
+  // The plans of table `kind`, made on first use.
+  const Table& table(ir::Kind kind) {
+    Table& t = tables[std::size_t(kind)];
+    if (!t.planned) {
+      t.plans = plan_symbols(*grammar, grammar->table(kind), t.weights);
+      for (const SymbolPlan& plan : t.plans) t.rewrites.push_back(plan.kind != SymbolPlan::Copy);
+      t.planned = true;
+    }
+    return t;
+  }
+};
+
 }  // namespace ramus::derive_plan

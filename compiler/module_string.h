@@ -19,7 +19,8 @@ namespace ramus {
 // Buffers of 64 KB and more come from here. A few freed buffers are kept for the next pass or
 // derivation instead of going back to the system, which hands them out again as fresh pages,
 // one page fault each (docs/engine.md, "The string"): below 2 MB up to 8 (16 MB), from 2 MB
-// up to 8 and an eighth of physical memory, whose pages the kernel may take back meanwhile.
+// up to 32 and an eighth of physical memory, resident while requests keep taking them; one idle
+// for a second is given back lazily (the kernel may take its pages when short of memory).
 void* allocate_buffer(std::size_t bytes);
 void free_buffer(void* p, std::size_t bytes) noexcept;
 // Gives every kept buffer back to the system (a long-lived process done deriving may call it).

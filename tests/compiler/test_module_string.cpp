@@ -1,7 +1,11 @@
 // ModuleString's layout: 16-bit parameter offsets with a full offset per block of 1024 modules
 // must give every module's parameters back across block boundaries, whether the string was
 // pushed module by module or filled in place as a derivation pass fills it.
+#include <algorithm>
 #include <catch2/catch.hpp>
+#include <chrono>
+#include <cstdint>
+#include <thread>
 #include <vector>
 
 #include "compiler/module_string.h"
@@ -73,12 +77,24 @@ TEST_CASE("module string: a freed large buffer serves the next derivation", "[mo
   CHECK(small != p);
   auto* q = static_cast<unsigned char*>(allocate_buffer(big - 4096));
   CHECK(q == p);
-  q[0] = 3;  // kept pages were given back lazily: writing them again works
+  q[0] = 3;  // the kept pages are the buffer's own: writing them again works
   q[big - 4097] = 4;
   CHECK(q[0] == 3);
   CHECK(q[big - 4097] == 4);
   free_buffer(q, big - 4096);
   free_buffer(small, big / 3);
+
+  // A kept buffer idle for a second is given back lazily (MADV_FREE) at the next large free or
+  // request; it is still kept: the next request that fits takes it and may write every byte.
+  std::this_thread::sleep_for(std::chrono::milliseconds(1100));
+  void* other = allocate_buffer(big / 3);  // checks the idle buffers first
+  auto* r = static_cast<unsigned char*>(allocate_buffer(big - 4096));
+  CHECK(r == p);
+  std::fill(r, r + big - 4096, std::uint8_t(5));
+  CHECK(r[0] == 5);
+  CHECK(r[big - 4097] == 5);
+  free_buffer(r, big - 4096);
+  free_buffer(other, big / 3);
 
   // A string filled after its arrays were kept by an earlier one reads back what was written.
   ModuleString a;
