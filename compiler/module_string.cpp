@@ -162,17 +162,25 @@ void free_buffer(void* p, std::size_t bytes) noexcept {
   std::free(p);
 }
 
-void release_kept_buffers() noexcept {
+std::size_t release_kept_buffers() noexcept {
   std::lock_guard<std::mutex> lock(kept_mutex);
+  std::size_t released = 0;
   for (Kept& k : kept) {
-    if (k.p) std::free(k.p);
+    if (k.p) {
+      std::free(k.p);
+      released += k.bytes;
+    }
     k = {};
   }
   for (KeptLarge& k : kept_large) {
-    if (k.p) std::free(k.p);
+    if (k.p) {
+      std::free(k.p);
+      released += k.bytes;
+    }
     k = {};
   }
   kept_large_bytes = 0;
+  return released;
 }
 
 namespace {

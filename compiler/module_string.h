@@ -23,8 +23,9 @@ namespace ramus {
 // for a second is given back lazily (the kernel may take its pages when short of memory).
 void* allocate_buffer(std::size_t bytes);
 void free_buffer(void* p, std::size_t bytes) noexcept;
-// Gives every kept buffer back to the system (a long-lived process done deriving may call it).
-void release_kept_buffers() noexcept;
+// Gives every kept buffer back to the system (a long-lived process done deriving may call it)
+// and returns their bytes.
+std::size_t release_kept_buffers() noexcept;
 inline constexpr std::size_t kLargeBuffer = std::size_t(2) << 20;
 inline constexpr std::size_t kMidBuffer = std::size_t(64) << 10;
 

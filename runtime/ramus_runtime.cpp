@@ -7,6 +7,7 @@
 #include <string_view>
 
 #include "compiler/derive.h"
+#include "compiler/module_string.h"
 #include "compiler/turtle.h"
 #include "formats/rmb/rmb_codec.h"
 #include "runtime/runtime_handles.h"
@@ -56,6 +57,8 @@ ramus_skeleton* ramus_grow(const ramus_grammar* g, int steps, uint64_t seed, cha
 }
 
 void ramus_free_skeleton(ramus_skeleton* s) { delete s; }
+
+size_t ramus_release_memory(void) { return ramus::release_kept_buffers(); }
 
 size_t ramus_node_count(const ramus_skeleton* s) { return s ? s->s.nodes.size() : 0; }
 

@@ -32,6 +32,12 @@ ramus_skeleton* ramus_grow(const ramus_grammar* g, int steps, uint64_t seed, cha
                            size_t errlen);
 void ramus_free_skeleton(ramus_skeleton* s);
 
+/* ramus_grow keeps the string buffers of its derivation (from 64 KB; those from 2 MB resident
+ * while later grows keep taking them, given back lazily after a second unused) so that the next
+ * grow writes to pages it already has. A client done growing trees for a while calls this to
+ * give them all back to the system; it returns their bytes (0 when nothing was kept). */
+size_t ramus_release_memory(void);
+
 /* Nodes: a forest; the segment of node i runs from its parent's position to its own. The
  * getters return 0, or -1 when i is out of range (outputs untouched). */
 size_t ramus_node_count(const ramus_skeleton* s);

@@ -108,6 +108,25 @@ TEST_CASE("C API: an explicit step count equals the grammar's own", "[runtime]")
   CHECK(std::string(err).find("negative") != std::string::npos);
 }
 
+// The string buffers a grow keeps for the next one are given back on request (a client done
+// growing trees): the first call returns their bytes, a second one finds nothing, and the next
+// grow is unchanged.
+TEST_CASE("C API: ramus_release_memory gives back the kept string buffers", "[runtime]") {
+  const std::string bytes = encode_example("abop/fig1_24a.ramus");
+  GrammarPtr g(ramus_load(bytes.data(), bytes.size(), nullptr, 0), ramus_free_grammar);
+  REQUIRE(g);
+  const std::uint64_t seed = ramus_grammar_seed(g.get());
+  const int steps = ramus_grammar_steps(g.get()) + 1;  // strings past the 64 KB buffers
+  ramus_release_memory();                              // whatever earlier tests left
+  SkeletonPtr before(ramus_grow(g.get(), steps, seed, nullptr, 0), ramus_free_skeleton);
+  REQUIRE(before);
+  CHECK(ramus_release_memory() >= 64 * 1024);
+  CHECK(ramus_release_memory() == 0);
+  SkeletonPtr after(ramus_grow(g.get(), steps, seed, nullptr, 0), ramus_free_skeleton);
+  REQUIRE(after);
+  CHECK(ramus_node_count(after.get()) == ramus_node_count(before.get()));
+}
+
 TEST_CASE("C API: a corrupted or truncated image is an error with the byte offset", "[runtime]") {
   const std::string good = encode_example("abop/fig1_24a.ramus");
   char err[256];
