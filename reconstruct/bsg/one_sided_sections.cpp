@@ -163,73 +163,141 @@ std::size_t fit_one_sided_sections(std::vector<Eigen::Vector3d>& pos,
   }
   const double thin = p.min_hint_spacings * p.spacing;
   const double min_arc = 60.0 * M_PI / 180;
-  std::vector<std::uint8_t> placed(n, 0);
-  std::vector<Eigen::Vector3d> placed_pos(n);
-  std::vector<double> placed_radius(n, 0.0);
-  tbb::parallel_for(std::size_t(0), n, [&](std::size_t vi) {
-    const std::uint32_t v = std::uint32_t(vi);
-    if (fitted[v] || ch[v].size() > 1 || hint[v] < thin) return;
-    const double r = branch_radius(v, parent, main_child, fitted, fitted_radius);
-    if (!(r >= p.spacing)) return;
-    // The local direction, two nodes up to two down (centre_line.cpp's direction_at).
+  // The cross-section at v: the slab across the local direction (two nodes up to two down, as
+  // centre_line.cpp's direction_at), `size` setting its reach and thickness as the radius hint
+  // does for the cross-sections. Fills the per-thread pts / w; false when too few points.
+  struct Frame {
+    Eigen::Vector3d x, e1, e2;
+  };
+  thread_local std::vector<std::uint32_t> near;
+  thread_local std::vector<Eigen::Vector2d> pts;
+  thread_local std::vector<double> w;
+  auto gather = [&](std::uint32_t v, double size, Frame& fr) {
     std::uint32_t a = v, b = v;
     for (int k = 0; k < 2; ++k) {
       if (parent[a] < n) a = parent[a];
       if (main_child[b] != kNone) b = main_child[b];
     }
     Eigen::Vector3d d = pos[b] - pos[a];
-    if (!(d.norm() > 0)) return;
+    if (!(d.norm() > 0)) return false;
     d.normalize();
     const Eigen::Vector3d helper =
         std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
-    const Eigen::Vector3d e1 = d.cross(helper).normalized(), e2 = d.cross(e1);
-    const double reach = std::max(2.5 * r, 5 * p.spacing);
-    const double half = std::max(0.3 * r, 1.5 * p.spacing);
-    thread_local std::vector<std::uint32_t> near;
-    thread_local std::vector<Eigen::Vector2d> pts;
-    thread_local std::vector<double> w;
+    fr.e1 = d.cross(helper).normalized(), fr.e2 = d.cross(fr.e1), fr.x = pos[v];
+    const double reach = std::max(2.5 * size, 5 * p.spacing);
+    const double half = std::max(0.3 * size, 1.5 * p.spacing);
     near.clear(), pts.clear(), w.clear();
-    const Eigen::Vector3d x = pos[v];
-    index.within_slab(x, std::sqrt(reach * reach + half * half), d, half, near);
+    index.within_slab(fr.x, std::sqrt(reach * reach + half * half), d, half, near);
     for (std::uint32_t i : near) {
-      const Eigen::Vector3d q = samples[i] - x;
+      const Eigen::Vector3d q = samples[i] - fr.x;
       if (std::abs(q.dot(d)) > half) continue;
-      const Eigen::Vector2d uv(q.dot(e1), q.dot(e2));
+      const Eigen::Vector2d uv(q.dot(fr.e1), q.dot(fr.e2));
       if (uv.squaredNorm() > reach * reach) continue;
       pts.push_back(uv);
       w.push_back(weight.empty() ? 1.0 : weight[i]);
     }
-    if (pts.size() < 8) return;
+    if (pts.size() < 8) return false;
     if (int(pts.size()) > p.max_slab_points) {
       const std::size_t stride = (pts.size() + p.max_slab_points - 1) / p.max_slab_points;
       std::size_t k = 0;
       for (std::size_t i = 0; i < pts.size(); i += stride) pts[k] = pts[i], w[k] = w[i], ++k;
       pts.resize(k), w.resize(k);
     }
-    // The arc's concave side, from the sign of its curvature: a parabola v = a + b u + c u^2
-    // across its chord (u along the major principal axis, v along the minor one). The mirror
-    // circle on the convex side fits an arc of 60-90 degrees almost as well (residuals within
-    // 10 % at 5 mm noise on a 7 cm limb), so the side must come from the bend, and the bend
-    // must be clear: |c| at least three standard errors.
+    return true;
+  };
+  // The arc's concave side, from the sign of its curvature: a parabola v = a + b u + c u^2
+  // across its chord (u along the major principal axis, v along the minor one). The mirror
+  // circle on the convex side fits an arc of 60-90 degrees almost as well (residuals within
+  // 10 % at 5 mm noise on a 7 cm limb), so the side must come from the bend, and the bend must
+  // be clear: |c| at least three standard errors. Returns the side (0: unclear), the arc's
+  // centroid and normal.
+  auto bend = [&](Eigen::Vector2d& m, Eigen::Vector2d& normal) {
     double sw = 0;
-    Eigen::Vector2d m = Eigen::Vector2d::Zero();
+    m.setZero();
     for (std::size_t i = 0; i < pts.size(); ++i) sw += w[i], m += w[i] * pts[i];
     m /= sw;
     Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
     for (std::size_t i = 0; i < pts.size(); ++i)
       cov += w[i] * (pts[i] - m) * (pts[i] - m).transpose();
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> es(cov);
-    const Eigen::Vector2d normal = es.eigenvectors().col(0), tangent = es.eigenvectors().col(1);
-    const int side = concave_side(pts, w, m, tangent, normal);
+    normal = es.eigenvectors().col(0);
+    return concave_side(pts, w, m, es.eigenvectors().col(1), normal);
+  };
+  // The radius of every node: its branch's fits (branch_radius); where the branch has none, the
+  // median of the free circle fits of its chain's one-sided arcs (at least three of them, each
+  // clearly bent, 60 degrees or more, within the residual and inlier limits; Livny 4.3 and
+  // TreeQSM take radii from the points where they can), at most the nearest fitted ancestor's.
+  std::vector<double> r_of(n, 0.0), free_r(n, 0.0);
+  std::vector<std::uint8_t> candidate(n, 0);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    if (fitted[v] || ch[v].size() > 1 || hint[v] < thin) continue;
+    candidate[v] = 1;
+    r_of[v] = branch_radius(v, parent, main_child, fitted, fitted_radius);
+  }
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t vi) {
+    const std::uint32_t v = std::uint32_t(vi);
+    if (!candidate[v] || r_of[v] > 0) return;
+    Frame fr;
+    // Allometric hints are about half the fitted radii on thick_oak's limbs: the slab is sized
+    // for twice the hint.
+    if (!gather(v, 2 * hint[v], fr)) return;
+    Eigen::Vector2d m, normal;
+    const int side = bend(m, normal);
+    if (side == 0) return;
+    const CircleFit f = fit_circle(pts, w, noise);
+    if (!f.valid || (f.centre - m).dot(normal) * side <= 0) return;
+    if (f.coverage >= min_arc && f.inlier_fraction >= p.min_inliers &&
+        f.residual <= p.max_residual * f.radius + noise && f.radius >= p.spacing &&
+        f.radius <= p.max_hint_factor * hint[v])
+      free_r[v] = f.radius;
+  });
+  {
+    std::vector<double> radii;
+    std::vector<std::uint32_t> chain;
+    for (std::uint32_t s = 0; s < n; ++s) {
+      if (parent[s] < n && ch[parent[s]].size() == 1) continue;  // not a chain start
+      chain.clear(), radii.clear();
+      for (std::uint32_t v = s;; v = ch[v][0]) {
+        chain.push_back(v);
+        if (free_r[v] > 0) radii.push_back(free_r[v]);
+        if (ch[v].size() != 1) break;
+      }
+      if (radii.size() < 3) continue;
+      std::nth_element(radii.begin(), radii.begin() + std::ptrdiff_t(radii.size() / 2),
+                       radii.end());
+      double r = radii[radii.size() / 2];
+      for (std::uint32_t u = parent[s]; u < n; u = parent[u]) {
+        if (fitted[u]) {
+          r = std::min(r, fitted_radius[u]);
+          break;
+        }
+      }
+      for (std::uint32_t v : chain) {
+        if (candidate[v] && r_of[v] == 0) r_of[v] = r;
+      }
+    }
+  }
+  std::vector<std::uint8_t> placed(n, 0);
+  std::vector<Eigen::Vector3d> placed_pos(n);
+  std::vector<double> placed_radius(n, 0.0);
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t vi) {
+    const std::uint32_t v = std::uint32_t(vi);
+    const double r = r_of[v];
+    if (!candidate[v] || !(r >= p.spacing)) return;
+    Frame fr;
+    if (!gather(v, r, fr)) return;
+    Eigen::Vector2d m, normal;
+    const int side = bend(m, normal);
     if (side == 0) return;
     const KnownRadiusFit f = fit_circle_known_radius(pts, w, r, m + side * 0.7 * r * normal, noise);
     if (!f.valid || (f.centre - m).dot(normal) * side <= 0) return;
+    const double reach = std::max(2.5 * r, 5 * p.spacing);
     const bool good = f.coverage >= min_arc && f.inlier_fraction >= p.min_inliers &&
                       f.residual <= p.max_residual * r + noise && f.centre.norm() + r <= reach &&
                       f.centre.norm() <= p.max_shift * r + 2 * p.spacing;
     if (!good) return;
     placed[v] = 1;
-    placed_pos[v] = x + f.centre.x() * e1 + f.centre.y() * e2;
+    placed_pos[v] = fr.x + f.centre.x() * fr.e1 + f.centre.y() * fr.e2;
     placed_radius[v] = r;
   });
   std::size_t count = 0;

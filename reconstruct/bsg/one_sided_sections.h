@@ -7,7 +7,9 @@
 // through the arc lies on its concave side, one radius inward along the surface normal. The
 // radius comes from the fits of the same branch (the nearest fitted nodes up and down the
 // chain), as Livny et al. 2010 (4.3) carry radii along a branch from where they are measured
-// and TreeQSM (Raumonen et al. 2013, 2.3) fits its cylinders along a segment.
+// and TreeQSM (Raumonen et al. 2013, 2.3) fits its cylinders along a segment; on a branch
+// without any fit, from the median of the free circles of its chain's one-sided arcs (the
+// radius of one short arc is noisy, of several it is not), at most its parent stem's.
 // docs/reconstruction.md, "Centre lines", step 5.
 #pragma once
 
@@ -36,9 +38,10 @@ KnownRadiusFit fit_circle_known_radius(const std::vector<Eigen::Vector2d>& pts,
                                        int iterations = 10);
 
 // For every node neither a cross-section nor a chain cylinder placed (not a fork, radius hint
-// at least CentreLineParams::min_hint_spacings), whose branch has fitted nodes within a few
-// nodes up or down its chain: the slab across the local direction is fitted with a circle of
-// that branch's radius, from both sides of the arc. The node moves to the centre when the
+// at least CentreLineParams::min_hint_spacings) whose branch radius is known (fitted nodes
+// within ten nodes up or down its chain, else at least three free fits of clearly bent arcs of
+// 60 degrees or more along its chain): the slab across the local direction is fitted with a
+// circle of that radius, started on the arc's concave side. The node moves to the centre when the
 // inliers cover at least 60 degrees, the arc bends clearly to one side (its mirror image on the
 // convex side fits a short arc almost as well: the fit starts on the concave side and must stay
 // there), and the usual residual, inlier and shift tests hold. Moved nodes get fitted = 1 and the
