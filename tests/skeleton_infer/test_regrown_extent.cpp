@@ -250,7 +250,8 @@ TEST_CASE("regrown extent: a real scan regrows its total length and crown extent
           "[skeleton_infer]") {
   const std::string scan = std::string(RAMUS_SHARED_DIR) + "/data/adtree_tree1.xyz";
   const std::string out = skeleton_test::scratch("adtree_tree1_extent.ramus").string();
-  auto r = cli_test::run_ramus({"infer", scan, "-o", out, "--method", "skeleton", "--model", "clustered"});
+  auto r = cli_test::run_ramus(
+      {"infer", scan, "-o", out, "--method", "skeleton", "--model", "clustered"});
   INFO(r.out);
   REQUIRE(r.status == 0);
   r = cli_test::run_ramus({"compare", scan, out, "--seeds", "10"});
