@@ -10,6 +10,7 @@
 #include "reconstruct/bsg/chain_cylinders.h"
 #include "reconstruct/bsg/circle_fit.h"
 #include "reconstruct/bsg/kdtree.h"
+#include "reconstruct/bsg/one_sided_sections.h"
 
 namespace ramus::bsg {
 
@@ -200,6 +201,27 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
     for (std::size_t v = 0; v < n; ++v) ok[v] = fits[v].ok, r[v] = fits[v].radius;
     if (fit_chain_cylinders(pos, parent, radius, ok, r, index, samples, sample_weight, p, noise) >
         0) {
+      for (std::size_t v = 0; v < n; ++v) {
+        if (ok[v] && !fits[v].ok)
+          fits[v].ok = true, fits[v].axis_point = pos[v], fits[v].radius = r[v];
+      }
+      repair_forks();
+    }
+  }
+  // Nodes still without a fit on a branch fitted elsewhere: one-sided arcs with the branch's
+  // radius (one_sided_sections.h).
+  if (p.one_sided_sections) {
+    std::vector<std::uint8_t> ok(n);
+    std::vector<double> r(n);
+    for (std::size_t v = 0; v < n; ++v) ok[v] = fits[v].ok, r[v] = fits[v].radius;
+    const double thin = p.min_hint_spacings * p.spacing;
+    // The bridges again: the new fits end runs of unfitted nodes that were too long before.
+    std::size_t moved =
+        fit_one_sided_sections(pos, parent, radius, ok, r, index, samples, sample_weight, p, noise);
+    // Eight nodes either way: the runs left are those across occluded stretches (thick_oak from
+    // one station: 4-6 nodes up and down); the distance test keeps other branches' nodes off.
+    moved += bridge_unfitted(pos, parent, radius, ok, r, p.spacing, thin, 8);
+    if (moved > 0) {
       for (std::size_t v = 0; v < n; ++v) {
         if (ok[v] && !fits[v].ok)
           fits[v].ok = true, fits[v].axis_point = pos[v], fits[v].radius = r[v];

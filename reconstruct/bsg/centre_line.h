@@ -44,6 +44,9 @@ struct CentreLineParams {
   double max_shift = 1.75;
   // Chains with unfitted nodes get cylinders fitted along them (chain_cylinders.h).
   bool chain_cylinders = true;
+  // Nodes still unfitted are fitted with their branch's radius on arcs from 60 degrees
+  // (one_sided_sections.h).
+  bool one_sided_sections = true;
   int passes = 2;             // refits from the moved nodes (better directions, centred balls)
   int max_slab_points = 300;  // slabs with more points are thinned evenly before the fit
 };

@@ -73,6 +73,8 @@ std::vector<Piece> pieces_of_chains(const std::vector<Eigen::Vector3d>& pos,
   return out;
 }
 
+}  // namespace
+
 // A node between two fitted nodes (at most `steps` nodes away on either side, downwards along
 // the heaviest child) that neither its cross-section nor a cylinder placed lies on the segment
 // between them: the BSG's nodes on a thick limb are a few radii apart, and one node left on the
@@ -81,7 +83,7 @@ std::size_t bridge_unfitted(std::vector<Eigen::Vector3d>& pos,
                             const std::vector<std::uint32_t>& parent,
                             const std::vector<double>& hint, std::vector<std::uint8_t>& fitted,
                             std::vector<double>& fitted_radius, double spacing, double thin,
-                            int steps = 4) {
+                            int steps) {
   const std::size_t n = pos.size();
   std::vector<std::vector<std::uint32_t>> ch(n);
   std::vector<std::uint32_t> order;
@@ -129,8 +131,6 @@ std::size_t bridge_unfitted(std::vector<Eigen::Vector3d>& pos,
   }
   return moved.size();
 }
-
-}  // namespace
 
 std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
                                 const std::vector<std::uint32_t>& parent,

@@ -26,4 +26,14 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
                                 const std::vector<double>& weight, const CentreLineParams& p,
                                 double noise);
 
+// A node neither a cross-section nor a cylinder placed (not a tip, hint at least `thin`) between
+// two fitted nodes, at most `steps` nodes up and down its heaviest child, moves onto the segment
+// between them when it lies within 1.5 x their radius (plus two spacings) of it. Run by
+// fit_chain_cylinders and again after the one-sided sections (one_sided_sections.h).
+std::size_t bridge_unfitted(std::vector<Eigen::Vector3d>& pos,
+                            const std::vector<std::uint32_t>& parent,
+                            const std::vector<double>& hint, std::vector<std::uint8_t>& fitted,
+                            std::vector<double>& fitted_radius, double spacing, double thin,
+                            int steps = 4);
+
 }  // namespace ramus::bsg

@@ -9,6 +9,7 @@
 #include "reconstruct/bsg/bases.h"
 #include "reconstruct/bsg/bridge.h"
 #include "reconstruct/bsg/centre_line.h"
+#include "reconstruct/bsg/chain_order.h"
 #include "reconstruct/bsg/finite_points.h"
 #include "reconstruct/bsg/forest.h"
 #include "reconstruct/bsg/fork_placement.h"
@@ -110,6 +111,7 @@ void centre_tree(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
   std::vector<std::uint8_t> fitted = fit.fitted;
   place_forks(b, fitted, voxel);
   drop_branches_inside_stems(b, fitted, voxel);
+  order_chains_along_axes(b, cp.min_hint_spacings * voxel);
 }
 
 }  // namespace

@@ -250,7 +250,8 @@ TEST_CASE("regrown extent: a real scan regrows its total length and crown extent
           "[skeleton_infer]") {
   const std::string scan = std::string(RAMUS_SHARED_DIR) + "/data/adtree_tree1.xyz";
   const std::string out = skeleton_test::scratch("adtree_tree1_extent.ramus").string();
-  auto r = cli_test::run_ramus({"infer", scan, "-o", out, "--method", "skeleton", "--model", "clustered"});
+  auto r = cli_test::run_ramus(
+      {"infer", scan, "-o", out, "--method", "skeleton", "--model", "clustered"});
   INFO(r.out);
   REQUIRE(r.status == 0);
   r = cli_test::run_ramus({"compare", scan, out, "--seeds", "10"});
@@ -267,11 +268,13 @@ TEST_CASE("regrown extent: a real scan regrows its total length and crown extent
   };
   // Drawn straight and uncalibrated, the regrown crown was 3.5 times as wide. The bounds leave
   // room for changes in the reconstruction (measured: length 0.9-1.1, crown 1.3-2.34 over the
-  // reconstructions of this scan so far, 64 to 201 internodes).
+  // reconstructions of this scan so far, 64 to 201 internodes; length 2.27, crown 1.22 since
+  // the one-sided sections of the centre lines, which leave one more fork on the deepest path:
+  // derive 24 instead of 22, from the deepest internode, so two more steps of growth).
   double a = 0, b = 0;
   means("total length", a, b);
   CHECK(b / a > 0.5);
-  CHECK(b / a < 2.0);
+  CHECK(b / a < 2.5);
   means("crown extent", a, b);
   CHECK(b / a > 0.5);
   CHECK(b / a < 2.75);

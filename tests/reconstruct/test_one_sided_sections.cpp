@@ -1,0 +1,123 @@
+// Cross-sections seen from one side, fitted with the branch's known radius
+// (reconstruct/bsg/one_sided_sections.h): the circle on a 70-degree arc, the nodes of a limb seen
+// from one side moved from its bark to its axis, a flat wall left alone, and the one-station scan
+// of the bundled thick_oak (issue 19), whose 5-20 cm limbs the free-radius fits left on the bark.
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <cmath>
+
+#include "compiler/grow.h"
+#include "core/rng.h"
+#include "reconstruct/bsg/bsg.h"
+#include "reconstruct/bsg/kdtree.h"
+#include "reconstruct/bsg/one_sided_sections.h"
+#include "tests/support/harness.h"
+
+using namespace ramus;
+
+TEST_CASE("known-radius circle: 70 degrees of arc fix the centre, given the side",
+          "[centre_line]") {
+  Rng rng(11);
+  const double r = 0.07;
+  const Eigen::Vector2d centre(0.02, 0.08);
+  std::vector<Eigen::Vector2d> pts;
+  for (int i = 0; i < 60; ++i) {
+    const double a = -M_PI / 2 + rng.uniform(-0.61, 0.61), rr = r + rng.normal(0, 0.005);
+    pts.emplace_back(centre.x() + rr * std::cos(a), centre.y() + rr * std::sin(a));
+  }
+  // The arc's middle is at (0.02, 0.01); the concave side is +y.
+  const bsg::KnownRadiusFit in = bsg::fit_circle_known_radius(pts, {}, r, {0.02, 0.06}, 0.005);
+  const bsg::KnownRadiusFit out = bsg::fit_circle_known_radius(pts, {}, r, {0.02, -0.04}, 0.005);
+  REQUIRE(in.valid);
+  REQUIRE(out.valid);
+  INFO("from the concave side " << in.centre.transpose() << ", residual " << in.residual
+                                << "; from the convex side " << out.centre.transpose()
+                                << ", residual " << out.residual);
+  CHECK((in.centre - centre).norm() <= 0.1 * r);
+  CHECK(in.coverage >= 60 * M_PI / 180);
+  CHECK(in.inlier_fraction >= 0.9);
+  // The mirror circle fits almost as well: which side is the concave one must come from the
+  // arc's bend (one_sided_sections.cpp), not from the fit.
+  CHECK(out.centre.y() < 0.01);
+  CHECK(out.residual < 1.5 * in.residual);
+  CHECK_FALSE(bsg::fit_circle_known_radius({}, {}, r, {0, 0}, 0.005).valid);
+}
+
+namespace {
+
+// A horizontal limb of radius 8 cm along x, seen from -y over 80 degrees of its bark, 1.5 cm
+// spacing. Nodes every 10 cm; the first two and the last two are fitted (on the axis), the
+// others lie on the bark facing the scanner, unfitted. Returns the largest distance of a middle
+// node from the axis after fit_one_sided_sections, and how many moved.
+std::pair<double, std::size_t> one_sided_limb(bool wall) {
+  Rng rng(5);
+  const double r = 0.08, spacing = 0.015;
+  std::vector<Eigen::Vector3d> samples;
+  for (double x = -0.1; x <= 1.1; x += spacing) {
+    for (double a = -40; a <= 40; a += 180 / M_PI * spacing / r) {
+      const double t = (a - 90) * M_PI / 180, rr = r + rng.normal(0, 0.004);
+      // A wall: the same points flattened onto the plane y = -r.
+      samples.emplace_back(x, wall ? -r + rng.normal(0, 0.004) : rr * std::cos(t),
+                           wall ? rr * std::sin(t) : rr * std::sin(t));
+    }
+  }
+  std::vector<Eigen::Vector3d> pos;
+  std::vector<std::uint32_t> parent;
+  std::vector<double> hint;
+  std::vector<std::uint8_t> fitted;
+  std::vector<double> fitted_radius;
+  for (int k = 0; k <= 10; ++k) {
+    const bool end = k < 2 || k > 8;
+    pos.emplace_back(0.1 * k, end ? 0.0 : -r, 0.0);
+    parent.push_back(k == 0 ? bsg::kNone : std::uint32_t(k - 1));
+    hint.push_back(0.04);  // the allometric hint: half the truth, as on thick_oak
+    fitted.push_back(end);
+    fitted_radius.push_back(end ? r : 0.0);
+  }
+  bsg::CentreLineParams p;
+  p.spacing = spacing;
+  const bsg::PointIndex index(samples);
+  const std::size_t moved = bsg::fit_one_sided_sections(pos, parent, hint, fitted, fitted_radius,
+                                                        index, samples, {}, p, 0.25 * spacing);
+  double worst = 0;
+  for (int k = 2; k <= 8; ++k) worst = std::max(worst, std::hypot(pos[k].y(), pos[k].z()));
+  return {worst, moved};
+}
+
+}  // namespace
+
+TEST_CASE("one-sided sections: a limb's bark nodes move to its axis, a wall's stay",
+          "[centre_line]") {
+  const auto [limb, limb_moved] = one_sided_limb(false);
+  INFO("limb: worst distance from the axis " << limb << " m, moved " << limb_moved);
+  CHECK(limb_moved == 7);
+  CHECK(limb <= 0.15 * 0.08);
+  const auto [wall, wall_moved] = one_sided_limb(true);
+  INFO("wall: moved " << wall_moved);
+  CHECK(wall_moved == 0);
+}
+
+// thick_oak (examples/trees) from one station. Measured (median centre-line error / radius over
+// all truth samples): 5-10 cm 0.451 -> 0.315, 10-20 cm 0.582 -> 0.406 with the one-sided
+// sections and the second round of bridges; the issue's 0.15 is not met (docs/reconstruction.md,
+// Centre lines). The bounds lie between the two.
+TEST_CASE("one-sided sections: thick_oak from one station, 5-20 cm limbs nearer their axes",
+          "[accuracy]") {
+  SourceManager sources;
+  DiagnosticSink diags;
+  const Skeleton truth =
+      grow_file(RAMUS_SOURCE_DIR "/examples/trees/thick_oak.ramus", {}, sources, diags);
+  REQUIRE(truth.size() > 10);
+  scanner::HarnessCase c;
+  c.stations = 1;
+  const scanner::HarnessResult r = scanner::run_harness(truth, c);
+  REQUIRE(r.trees == 1);
+  const SkeletonComparison& a = r.at_radius;
+  CHECK(a.precision >= 0.95);
+  for (const CentreError& e : a.centre_error) {
+    INFO("radii " << e.lo << "-" << e.hi << ": median " << e.median << ", n " << e.samples);
+    if (e.lo >= 0.05 && e.hi <= 0.1 + 1e-9) CHECK(e.median <= 0.37);
+    if (e.lo >= 0.1 && e.hi <= 0.2 + 1e-9) CHECK(e.median <= 0.48);
+    if (e.lo >= 0.2 && e.hi <= 0.4 + 1e-9) CHECK(e.median <= 0.15);
+  }
+}
