@@ -16,9 +16,9 @@
 #include "cli/skeleton_source.h"
 #include "core/atomic_file.h"
 #include "formats/skeleton_json.h"
-#include "reconstruct/merge/branch_merge.h"
 #include "infer/skeleton/scaffold_grammar.h"
 #include "infer/skeleton/skeleton_grammar.h"
+#include "reconstruct/merge/branch_merge.h"
 
 namespace ramus::cli {
 
@@ -32,7 +32,7 @@ struct SkeletonInferArgs {
   int clusters = 4;
   int max_order = 3;
   int tree_index = -1;
-  int calibration_seeds = 4;
+  int calibration_seeds = 32;
   bool no_tropism = false;
   bool no_axis_budget = false;
   std::string axis_ends = "auto";  // auto | own | shared
@@ -214,7 +214,7 @@ InferRunner add_infer_skeleton_options(CLI::App& cmd, const GlobalOptions& globa
   a->clustered_only.push_back(
       cmd.add_option("--calibrate", a->calibration_seeds,
                      "skeleton: fit the tip hazards to the input's total length over N grown seeds "
-                     "(default 4; 0: off)")
+                     "(default 32; 0: off)")
           ->check(CLI::Range(0, 100)));
   a->clustered_only.push_back(cmd.add_flag(
       "--no-axis-budget", a->no_axis_budget,

@@ -376,16 +376,27 @@ void smooth_fitted_radii(const std::vector<std::uint32_t>& parent, const CentreL
   // fitted and allometric radii, which may differ by 3 x, and its mesh looks knotted.
   std::vector<std::uint32_t> order, main_child;
   tree_order(parent, order, main_child);
+  // A fitted radius more than kMaxRadiusStep times its parent's is not a stem's: the pipe model
+  // (Livny et al. 4.3) never lets a child be thicker than its parent, and twice leaves room for
+  // fit noise and for a parent fitted small from one side. Circles of several metres fitted to
+  // the sparse crown of an airborne scan (adtree_ahn3_delft: 2.7 m after 0.25 m) are such; they
+  // take the allometric shape below the last sound radius like the unfitted nodes.
+  constexpr double kMaxRadiusStep = 2;
   std::vector<std::uint32_t> anchor(n, kNone);
   for (std::uint32_t v : order) {
     const std::uint32_t u = parent[v] < n ? parent[v] : kNone;
-    if (fit.fitted[v]) {
+    const bool too_thick = fit.fitted[v] && u != kNone && radius[v] > kMaxRadiusStep * radius[u];
+    if (fit.fitted[v] && !too_thick) {
       anchor[v] = v;
       continue;
     }
     anchor[v] = u == kNone ? kNone : anchor[u];
     const std::uint32_t a = anchor[v];
-    if (a != kNone && prior[a] > 0) radius[v] = radius[a] * std::min(1.0, prior[v] / prior[a]);
+    if (a != kNone && prior[a] > 0) {
+      radius[v] = radius[a] * std::min(1.0, prior[v] / prior[a]);
+    } else if (too_thick) {
+      radius[v] = radius[u];  // no sound radius above it: its parent's
+    }
   }
 }
 

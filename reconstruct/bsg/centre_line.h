@@ -85,7 +85,8 @@ std::size_t drop_branches_inside_stems(Bsg& bsg, const std::vector<std::uint8_t>
 // Radii after centre_line: fitted nodes take the median of the fitted radii of themselves, their
 // parent and their children (one noisy slab does not make a bulge); the others below a fitted
 // node keep their radii's shape (radius / the fitted ancestor's radius, at most 1) scaled to that
-// ancestor's fitted radius; nodes above every fit keep theirs.
+// ancestor's fitted radius; nodes above every fit keep theirs. A fitted radius over twice its
+// parent's counts as unfitted.
 void smooth_fitted_radii(const std::vector<std::uint32_t>& parent, const CentreLineResult& fit,
                          std::vector<double>& radius);
 

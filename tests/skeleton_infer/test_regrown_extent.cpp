@@ -268,13 +268,13 @@ TEST_CASE("regrown extent: a real scan regrows its total length and crown extent
   };
   // Drawn straight and uncalibrated, the regrown crown was 3.5 times as wide. The bounds leave
   // room for changes in the reconstruction (measured: length 0.9-1.1, crown 1.3-2.34 over the
-  // reconstructions of this scan so far, 64 to 201 internodes; length 2.27, crown 1.22 since
-  // the one-sided sections of the centre lines, which leave one more fork on the deepest path:
-  // derive 24 instead of 22, from the deepest internode, so two more steps of growth).
+  // reconstructions of this scan so far, 64 to 201 internodes). The regrown length is
+  // heavy-tailed over seeds: calibrated over 4 seeds, one reconstruction of this scan regrew
+  // 2.27 x over 10 seeds and 1.89 x over 30; over the default 32, 0.73-1.22 x.
   double a = 0, b = 0;
   means("total length", a, b);
   CHECK(b / a > 0.5);
-  CHECK(b / a < 2.5);
+  CHECK(b / a < 2.0);
   means("crown extent", a, b);
   CHECK(b / a > 0.5);
   CHECK(b / a < 2.75);
