@@ -66,16 +66,28 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   residuals();
   for (int it = 0; it < iterations; ++it) {
     const bool tukey = it >= iterations / 3;
-    Eigen::Matrix<double, 5, 5> jtj = Eigen::Matrix<double, 5, 5>::Zero();
-    Eigen::Matrix<double, 5, 1> jte = Eigen::Matrix<double, 5, 1>::Zero();
+    // J^T W J (its lower triangle, the part LDLT reads) and J^T W e in scalars: entry (a, b) is
+    // j_b (w j_a), as Eigen's `w * j * j.transpose()` computes it, but an Eigen 5 x 5 outer
+    // product accumulated per point went through the stack and stalled the loop.
+    std::array<double, 15> lower{};  // row-major: (0,0) (1,0) (1,1) (2,0) ...
+    std::array<double, 5> g{};
     for (std::size_t i = 0; i < n; ++i) {
       const double rw = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
       if (rw <= 0) continue;
       const double n1 = nrm[i].dot(e1), n2 = nrm[i].dot(e2);
-      Eigen::Matrix<double, 5, 1> j;
-      j << -t[i] * n1, -t[i] * n2, -n1, -n2, -1.0;
-      jtj += rw * j * j.transpose();
-      jte += rw * j * e[i];
+      const double j[5] = {-t[i] * n1, -t[i] * n2, -n1, -n2, -1.0};
+      double w[5];
+      for (int a = 0; a < 5; ++a) w[a] = rw * j[a];
+      for (int a = 0, k = 0; a < 5; ++a) {
+        for (int b = 0; b <= a; ++b, ++k) lower[k] += j[b] * w[a];
+        g[a] += w[a] * e[i];
+      }
+    }
+    Eigen::Matrix<double, 5, 5> jtj;
+    Eigen::Matrix<double, 5, 1> jte;
+    for (int a = 0, k = 0; a < 5; ++a) {
+      for (int b = 0; b <= a; ++b, ++k) jtj(a, b) = jtj(b, a) = lower[k];
+      jte(a) = g[a];
     }
     jtj.diagonal() *= 1.0 + 1e-6;
     const Eigen::Matrix<double, 5, 1> step = jtj.ldlt().solve(-jte);
