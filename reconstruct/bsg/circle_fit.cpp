@@ -3,6 +3,7 @@
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 
 #include "core/rng.h"
 
@@ -20,6 +21,9 @@ struct CircleScratch {
   std::vector<double> x, y, w;  // the points' coordinates and weights (1 when none are given)
   std::vector<Eigen::Vector2d> near;
   std::vector<char> in;
+  // consensus: the points near a candidate, and their squared distances
+  std::vector<std::uint32_t> sel;
+  std::vector<double> sel_d2;
   std::vector<CircleFit> starts;
 };
 thread_local CircleScratch scratch;
@@ -50,22 +54,29 @@ CircleFit circle_through(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
 }
 
 // Consensus of a candidate: the weight of the points within tau of it, each counted with a
-// truncated quadratic so that the tighter of two circles wins.
+// truncated quadratic so that the tighter of two circles wins. `sel` and `d2s` are work space of
+// n entries.
 double consensus(std::size_t n, const double* x, const double* y, const double* w,
-                 const CircleFit& f, double tau) {
+                 const CircleFit& f, double tau, std::uint32_t* sel, double* d2s) {
   // Most points are far from a candidate: they are skipped on their squared distance (bounds
   // widened by a relative 1e-9, so no point within tau is skipped through rounding), and the
-  // square root is taken only of the others.
+  // square root is taken only of the others. The near ones are listed first, in order, without
+  // a branch (which points are near is unpredictable, and the mispredicted branch was most of
+  // this loop's time), then summed as before.
   const double lo = f.radius > tau ? (f.radius - tau) * (f.radius - tau) * (1 - 1e-9) : 0.0;
   const double hi = (f.radius + tau) * (f.radius + tau) * (1 + 1e-9);
   const double cx = f.centre.x(), cy = f.centre.y(), r = f.radius;
-  double score = 0;
+  std::size_t m = 0;
   for (std::size_t i = 0; i < n; ++i) {
     const double dx = x[i] - cx, dy = y[i] - cy;
     const double d2 = dx * dx + dy * dy;
-    if (d2 < lo || d2 > hi) continue;
-    const double e = (std::sqrt(d2) - r) / tau;
-    if (std::abs(e) < 1) score += w[i] * (1 - e * e);
+    sel[m] = std::uint32_t(i), d2s[m] = d2;
+    m += !(d2 < lo) & !(d2 > hi);
+  }
+  double score = 0;
+  for (std::size_t k = 0; k < m; ++k) {
+    const double e = (std::sqrt(d2s[k]) - r) / tau;
+    if (std::abs(e) < 1) score += w[sel[k]] * (1 - e * e);
   }
   return score;
 }
@@ -224,13 +235,14 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
     starts.push_back(circle_through(pts[a], pts[b], pts[c]));
   }
   std::vector<double>&x = scratch.x, &y = scratch.y, &w = scratch.w;
-  x.resize(n), y.resize(n), w.resize(n);
+  x.resize(n), y.resize(n), w.resize(n), scratch.sel.resize(n), scratch.sel_d2.resize(n);
   for (std::size_t i = 0; i < n; ++i)
     x[i] = pts[i].x(), y[i] = pts[i].y(), w[i] = weight_of(weights, i);
   double best = -1;
   for (const CircleFit& s : starts) {
     if (!s.valid) continue;
-    const double score = consensus(n, x.data(), y.data(), w.data(), s, tau);
+    const double score = consensus(n, x.data(), y.data(), w.data(), s, tau, scratch.sel.data(),
+                                   scratch.sel_d2.data());
     if (score > best) best = score, f = s;
   }
   if (!f.valid) return f;
@@ -256,7 +268,8 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
       const double dx = px[i] - cx, dy = py[i] - cy;
       plen[i] = std::sqrt(dx * dx + dy * dy);  // kept for the Jacobian
       pe[i] = plen[i] - r;
-      if (std::abs(pe[i]) < 4 * tau) ne[m++] = pe[i];
+      ne[m] = pe[i];  // kept when near, without a branch
+      m += std::abs(pe[i]) < 4 * tau;
     }
     scale = std::max(m == 0 ? tau : robust_scale_of(ne, m), noise);
   };
