@@ -53,6 +53,17 @@ CircleFit circle_through(const Eigen::Vector2d& a, const Eigen::Vector2d& b,
   return f;
 }
 
+// robust_weight(), both cases of each weight computed so that the choice needs no branch.
+inline double robust_weight_of(double u, bool tukey) {
+  if (tukey) {
+    const double t = u / 4.685;
+    const double biweight = (1 - t * t) * (1 - t * t);
+    return t < 1 ? biweight : 0.0;
+  }
+  const double huber = 1.345 / u;
+  return u <= 1.345 ? 1.0 : huber;
+}
+
 // Consensus of a candidate: the weight of the points within tau of it, each counted with a
 // truncated quadratic so that the tighter of two circles wins. `sel` and `d2s` are work space of
 // n entries.
@@ -143,13 +154,7 @@ double robust_scale(const std::vector<double>& e) {
 
 double robust_scale_in_place(std::vector<double>& e) { return robust_scale_of(e.data(), e.size()); }
 
-double robust_weight(double u, bool tukey) {
-  if (tukey) {
-    const double t = u / 4.685;
-    return t < 1 ? (1 - t * t) * (1 - t * t) : 0.0;
-  }
-  return u <= 1.345 ? 1.0 : 1.345 / u;
-}
+double robust_weight(double u, bool tukey) { return robust_weight_of(u, tukey); }
 
 double angular_coverage(std::vector<double>& ang) {
   if (ang.size() < 2) return 0.0;
@@ -279,11 +284,21 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
     const bool tukey = it >= iterations / 3;
     // J^T W J and J^T W e of the rows j = (-dx / len, -dy / len, -1), entry (a, b) of the outer
     // product being j_b (w j_a) as Eigen's `w * j * j.transpose()` computes it.
+    // The points that count (positive weight, off the centre) are listed first without a branch,
+    // as in consensus().
+    std::uint32_t* sel = scratch.sel.data();
+    double* sel_w = scratch.sel_d2.data();
+    std::size_t m = 0;
+    for (std::size_t i = 0; i < n; ++i) {
+      const double rw = robust_weight_of(std::abs(pe[i]) / scale, tukey) * pw[i];
+      sel[m] = std::uint32_t(i), sel_w[m] = rw;
+      m += !(rw <= 0) & (plen[i] > 0);
+    }
     double a00 = 0, a01 = 0, a02 = 0, a10 = 0, a11 = 0, a12 = 0, a20 = 0, a21 = 0, a22 = 0;
     double g0 = 0, g1 = 0, g2 = 0;
-    for (std::size_t i = 0; i < n; ++i) {
-      const double rw = robust_weight(std::abs(pe[i]) / scale, tukey) * pw[i];
-      if (rw <= 0 || !(plen[i] > 0)) continue;
+    for (std::size_t k = 0; k < m; ++k) {
+      const std::size_t i = sel[k];
+      const double rw = sel_w[k];
       const double jx = -(px[i] - cx) / plen[i], jy = -(py[i] - cy) / plen[i];
       const double wx = rw * jx, wy = rw * jy, wz = -rw;
       a00 += jx * wx, a01 += jy * wx, a02 -= wx;
