@@ -51,7 +51,9 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   const double tau = 2.5 * std::max(noise, 1e-12);
   double scale = 0;
   auto residuals = [&] {
-    near_e.clear();
+    near_e.resize(n);
+    std::size_t m = 0;
+    const double near = std::max(4 * tau, 0.5 * r);
     for (std::size_t i = 0; i < n; ++i) {
       const Eigen::Vector3d w = pts[i] - q;
       t[i] = w.dot(d);
@@ -59,8 +61,10 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
       const double rho = perp.norm();
       nrm[i] = rho > 0 ? Eigen::Vector3d(perp / rho) : e1;
       e[i] = rho - r;
-      if (std::abs(e[i]) < std::max(4 * tau, 0.5 * r)) near_e.push_back(e[i]);
+      near_e[m] = e[i];  // kept when near, without a branch (which are near is unpredictable)
+      m += std::abs(e[i]) < near;
     }
+    near_e.resize(m);
     scale = std::max(near_e.empty() ? tau : robust_scale_in_place(near_e), noise);
   };
   residuals();
