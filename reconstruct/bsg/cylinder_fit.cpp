@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "reconstruct/bsg/circle_fit.h"
 
@@ -34,7 +35,8 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   // 1. The circle of the points seen along the start direction.
   // Per-thread work space (chain_cylinders.h fits hundreds of pieces, twice each).
   thread_local std::vector<Eigen::Vector2d> uv;
-  thread_local std::vector<double> e, t, near_e, ang, inlier_e;
+  thread_local std::vector<double> e, t, near_e, ang, inlier_e, sel_w;
+  thread_local std::vector<std::uint32_t> sel;
   thread_local std::vector<Eigen::Vector3d> nrm;
   uv.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -75,9 +77,18 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
     // product accumulated per point went through the stack and stalled the loop.
     std::array<double, 15> lower{};  // row-major: (0,0) (1,0) (1,1) (2,0) ...
     std::array<double, 5> g{};
+    // The points with a positive weight are listed first without a branch (which are is
+    // unpredictable), then accumulated in order.
+    sel.resize(n), sel_w.resize(n);
+    std::size_t m = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const double rw = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
-      if (rw <= 0) continue;
+      sel[m] = std::uint32_t(i), sel_w[m] = rw;
+      m += !(rw <= 0);
+    }
+    for (std::size_t k = 0; k < m; ++k) {
+      const std::size_t i = sel[k];
+      const double rw = sel_w[k];
       const double n1 = nrm[i].dot(e1), n2 = nrm[i].dot(e2);
       const double j[5] = {-t[i] * n1, -t[i] * n2, -n1, -n2, -1.0};
       double w[5];
