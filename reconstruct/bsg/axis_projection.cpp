@@ -70,11 +70,19 @@ Line fit_line(const Level& l, const PointIndex& index, const Eigen::Vector3d& q,
     w += l.weight[ids[i]], mean += l.weight[ids[i]] * l.pos[ids[i]];
   if (w < params.min_weight || m < 3) return {};
   mean /= w;
-  Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
+  // The weighted scatter in scalars, entry (a, b) being d_b (w d_a) as Eigen's
+  // `w * d * d.transpose()` computes it (the same bits): an Eigen outer product added per point
+  // goes through a stack temporary whose stores and wider loads stall the loop.
+  double c[9] = {};  // column-major, as Eigen stores it
   for (std::size_t i = 0; i < m; ++i) {
     const Eigen::Vector3d d = l.pos[ids[i]] - mean;
-    cov += l.weight[ids[i]] * d * d.transpose();
+    const double wi = l.weight[ids[i]];
+    const double wd[3] = {wi * d.x(), wi * d.y(), wi * d.z()};
+    for (int b = 0; b < 3; ++b) {
+      for (int a = 0; a < 3; ++a) c[a + 3 * b] += d(b) * wd[a];
+    }
   }
+  const Eigen::Matrix3d cov = Eigen::Map<const Eigen::Matrix3d>(c);
   Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
   eig.computeDirect(cov / w);
   const Eigen::Vector3d lambda = eig.eigenvalues();  // ascending

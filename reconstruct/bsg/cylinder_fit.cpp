@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 
 #include "reconstruct/bsg/circle_fit.h"
 
@@ -34,7 +35,8 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   // 1. The circle of the points seen along the start direction.
   // Per-thread work space (chain_cylinders.h fits hundreds of pieces, twice each).
   thread_local std::vector<Eigen::Vector2d> uv;
-  thread_local std::vector<double> e, t, near_e, ang, inlier_e;
+  thread_local std::vector<double> e, t, near_e, ang, inlier_e, sel_w;
+  thread_local std::vector<std::uint32_t> sel;
   thread_local std::vector<Eigen::Vector3d> nrm;
   uv.resize(n);
   for (std::size_t i = 0; i < n; ++i) {
@@ -51,7 +53,9 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   const double tau = 2.5 * std::max(noise, 1e-12);
   double scale = 0;
   auto residuals = [&] {
-    near_e.clear();
+    near_e.resize(n);
+    std::size_t m = 0;
+    const double near = std::max(4 * tau, 0.5 * r);
     for (std::size_t i = 0; i < n; ++i) {
       const Eigen::Vector3d w = pts[i] - q;
       t[i] = w.dot(d);
@@ -59,23 +63,46 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
       const double rho = perp.norm();
       nrm[i] = rho > 0 ? Eigen::Vector3d(perp / rho) : e1;
       e[i] = rho - r;
-      if (std::abs(e[i]) < std::max(4 * tau, 0.5 * r)) near_e.push_back(e[i]);
+      near_e[m] = e[i];  // kept when near, without a branch (which are near is unpredictable)
+      m += std::abs(e[i]) < near;
     }
+    near_e.resize(m);
     scale = std::max(near_e.empty() ? tau : robust_scale_in_place(near_e), noise);
   };
   residuals();
   for (int it = 0; it < iterations; ++it) {
     const bool tukey = it >= iterations / 3;
-    Eigen::Matrix<double, 5, 5> jtj = Eigen::Matrix<double, 5, 5>::Zero();
-    Eigen::Matrix<double, 5, 1> jte = Eigen::Matrix<double, 5, 1>::Zero();
+    // J^T W J (its lower triangle, the part LDLT reads) and J^T W e in scalars: entry (a, b) is
+    // j_b (w j_a), as Eigen's `w * j * j.transpose()` computes it, but an Eigen 5 x 5 outer
+    // product accumulated per point went through the stack and stalled the loop.
+    std::array<double, 15> lower{};  // row-major: (0,0) (1,0) (1,1) (2,0) ...
+    std::array<double, 5> g{};
+    // The points with a positive weight are listed first without a branch (which are is
+    // unpredictable), then accumulated in order.
+    sel.resize(n), sel_w.resize(n);
+    std::size_t m = 0;
     for (std::size_t i = 0; i < n; ++i) {
       const double rw = robust_weight(std::abs(e[i]) / scale, tukey) * weight_of(weights, i);
-      if (rw <= 0) continue;
+      sel[m] = std::uint32_t(i), sel_w[m] = rw;
+      m += !(rw <= 0);
+    }
+    for (std::size_t k = 0; k < m; ++k) {
+      const std::size_t i = sel[k];
+      const double rw = sel_w[k];
       const double n1 = nrm[i].dot(e1), n2 = nrm[i].dot(e2);
-      Eigen::Matrix<double, 5, 1> j;
-      j << -t[i] * n1, -t[i] * n2, -n1, -n2, -1.0;
-      jtj += rw * j * j.transpose();
-      jte += rw * j * e[i];
+      const double j[5] = {-t[i] * n1, -t[i] * n2, -n1, -n2, -1.0};
+      double w[5];
+      for (int a = 0; a < 5; ++a) w[a] = rw * j[a];
+      for (int a = 0, k = 0; a < 5; ++a) {
+        for (int b = 0; b <= a; ++b, ++k) lower[k] += j[b] * w[a];
+        g[a] += w[a] * e[i];
+      }
+    }
+    Eigen::Matrix<double, 5, 5> jtj;
+    Eigen::Matrix<double, 5, 1> jte;
+    for (int a = 0, k = 0; a < 5; ++a) {
+      for (int b = 0; b <= a; ++b, ++k) jtj(a, b) = jtj(b, a) = lower[k];
+      jte(a) = g[a];
     }
     jtj.diagonal() *= 1.0 + 1e-6;
     const Eigen::Matrix<double, 5, 1> step = jtj.ldlt().solve(-jte);

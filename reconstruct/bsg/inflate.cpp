@@ -206,9 +206,17 @@ double mean_sample_distance(const Bsg& bsg, const std::vector<Eigen::Vector3d>& 
   // Points along every edge, each remembering its edge; the nearest few give the nearest edge.
   std::vector<Eigen::Vector3d> along;
   std::vector<std::uint32_t> edge_of;
+  std::vector<int> steps_of(bsg.size(), 0);
+  std::size_t total = 0;
+  for (std::uint32_t v = 1; v < bsg.size(); ++v) {
+    const Eigen::Vector3d d = bsg.pos[v] - bsg.pos[bsg.parent[v]];
+    steps_of[v] = std::clamp(int(std::ceil(d.norm() / edge_sample)), 1, 1000);
+    total += std::size_t(steps_of[v]) + 1;
+  }
+  along.reserve(total), edge_of.reserve(total);
   for (std::uint32_t v = 1; v < bsg.size(); ++v) {
     const Eigen::Vector3d a = bsg.pos[bsg.parent[v]], d = bsg.pos[v] - a;
-    const int steps = std::clamp(int(std::ceil(d.norm() / edge_sample)), 1, 1000);
+    const int steps = steps_of[v];
     for (int s = 0; s <= steps; ++s) {
       along.push_back(a + d * (double(s) / steps));
       edge_of.push_back(v);
@@ -223,6 +231,10 @@ double mean_sample_distance(const Bsg& bsg, const std::vector<Eigen::Vector3d>& 
     double best = std::numeric_limits<double>::infinity();
     for (std::size_t j = 0; j < n; ++j) {
       const std::uint32_t v = edge_of[ids[j]];
+      // Neighbours on one edge give one distance: each edge is measured once.
+      bool seen = false;
+      for (std::size_t i2 = 0; i2 < j; ++i2) seen |= edge_of[ids[i2]] == v;
+      if (seen) continue;
       const Eigen::Vector3d a = bsg.pos[bsg.parent[v]], ab = bsg.pos[v] - a;
       const double l2 = ab.squaredNorm();
       const double t = l2 > 0 ? std::clamp((samples[i] - a).dot(ab) / l2, 0.0, 1.0) : 0.0;

@@ -75,6 +75,27 @@ TEST_CASE("circle fit: degenerate input is invalid, never NaN", "[centre_line]")
   CHECK_FALSE(bsg::fit_circle(same, {}, 0.001).valid);
 }
 
+TEST_CASE("robust scale: 1.4826 x the median absolute value, with ties and many sizes",
+          "[centre_line]") {
+  // robust_scale selects the median without sorting (a quickselect of its own); it must return
+  // exactly the order statistic a sort gives, ties and repeated values included.
+  Rng rng(17);
+  CHECK(bsg::robust_scale({}) == 0.0);
+  for (int trial = 0; trial < 2000; ++trial) {
+    const std::size_t n = 1 + rng.below(trial % 4 == 0 ? 400 : 40);
+    std::vector<double> e(n);
+    for (double& x : e) {
+      // Every third array holds few distinct values (many ties), the others signed normals.
+      x = trial % 3 == 0 ? double(rng.below(4)) - 2.0 : rng.normal(0, 1 + rng.below(3));
+    }
+    std::vector<double> sorted = e;
+    for (double& x : sorted) x = std::abs(x);
+    std::sort(sorted.begin(), sorted.end());
+    INFO("n " << n << " trial " << trial);
+    REQUIRE(bsg::robust_scale(e) == 1.4826 * sorted[n / 2]);
+  }
+}
+
 namespace {
 
 double segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
