@@ -14,6 +14,14 @@
 
 namespace ramus::bsg {
 
+void thin_slab(std::vector<Eigen::Vector2d>& pts, std::vector<double>& w, int max_points) {
+  if (max_points <= 0 || int(pts.size()) <= max_points) return;
+  const std::size_t stride = (pts.size() + max_points - 1) / max_points;
+  std::size_t k = 0;
+  for (std::size_t i = 0; i < pts.size(); i += stride) pts[k] = pts[i], w[k] = w[i], ++k;
+  pts.resize(k), w.resize(k);
+}
+
 namespace {
 
 struct SlabFit {
@@ -75,12 +83,7 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
       continue;
     }
     if (pts.size() < 8) return out;
-    if (int(pts.size()) > p.max_slab_points) {
-      const std::size_t stride = (pts.size() + p.max_slab_points - 1) / p.max_slab_points;
-      std::size_t k = 0;
-      for (std::size_t i = 0; i < pts.size(); i += stride) pts[k] = pts[i], w[k] = w[i], ++k;
-      pts.resize(k), w.resize(k);
-    }
+    thin_slab(pts, w, p.max_slab_points);
     const CircleFit f = fit_circle(pts, w, noise);
     if (!f.valid) return out;
     const double extent = f.centre.norm() + f.radius;

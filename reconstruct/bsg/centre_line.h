@@ -82,6 +82,10 @@ void subdivide_long_edges(Bsg& bsg, double spacing, double min_radius, double ed
 std::size_t drop_branches_inside_stems(Bsg& bsg, const std::vector<std::uint8_t>& fitted,
                                        double spacing);
 
+// Thins a slab's points and their weights evenly (every k-th, k the smallest stride that keeps
+// at most `max_points`); a slab of thousands of points fits no better than of a few hundred.
+void thin_slab(std::vector<Eigen::Vector2d>& pts, std::vector<double>& w, int max_points);
+
 // Radii after centre_line: fitted nodes take the median of the fitted radii of themselves, their
 // parent and their children (one noisy slab does not make a bulge); the others below a fitted
 // node keep their radii's shape (radius / the fitted ancestor's radius, at most 1) scaled to that

@@ -197,12 +197,7 @@ std::size_t fit_one_sided_sections(std::vector<Eigen::Vector3d>& pos,
       w.push_back(weight.empty() ? 1.0 : weight[i]);
     }
     if (pts.size() < 8) return false;
-    if (int(pts.size()) > p.max_slab_points) {
-      const std::size_t stride = (pts.size() + p.max_slab_points - 1) / p.max_slab_points;
-      std::size_t k = 0;
-      for (std::size_t i = 0; i < pts.size(); i += stride) pts[k] = pts[i], w[k] = w[i], ++k;
-      pts.resize(k), w.resize(k);
-    }
+    thin_slab(pts, w, p.max_slab_points);
     return true;
   };
   // The arc's concave side, from the sign of its curvature: a parabola v = a + b u + c u^2
