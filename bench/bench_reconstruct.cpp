@@ -21,10 +21,10 @@
 #include <filesystem>
 #include <string>
 
-#include "mesh/tree_mesh.h"
 #include "compiler/grow.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
+#include "mesh/tree_mesh.h"
 #include "tests/reconstruct/reconstruct_fixtures.h"
 #include "tests/support/harness.h"
 
@@ -122,6 +122,13 @@ void accuracy(const std::string& path, const scanner::HarnessCase& base) {
       if (e.samples == 0) continue;
       std::printf(" [%.0f-%.0f cm: %.3f, found %.3f, p90 %.2f, n=%zu]", 100 * e.lo, 100 * e.hi,
                   e.median, e.median_found, e.p90, e.samples);
+    }
+    // The same over the wood the scan saw (CompareOptions::scan).
+    std::printf("\n  seen=%.3f recall(2r, seen)=%.3f centre/r median seen=%.3f", a.seen_fraction,
+                a.recall_seen, a.centre_error_median_seen);
+    for (const CentreError& e : a.centre_error) {
+      if (e.seen == 0) continue;
+      std::printf(" [%.0f-%.0f cm: %.3f, n=%zu]", 100 * e.lo, 100 * e.hi, e.median_seen, e.seen);
     }
     std::printf("\n");
   }

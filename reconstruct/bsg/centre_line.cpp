@@ -24,6 +24,9 @@ void thin_slab(std::vector<Eigen::Vector2d>& pts, std::vector<double>& w, int ma
 
 namespace {
 
+// cos 15 degrees: directions this close cut a stem in nearly the same slab.
+constexpr double kSameDirection = 0.966;
+
 struct SlabFit {
   bool ok = false;
   Eigen::Vector3d axis_point;
@@ -196,6 +199,49 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
     }
     for (std::size_t v = 0; v < n; ++v) pos[v] = fits[v].ok ? fits[v].axis_point : original[v];
     repair_forks();
+  }
+  // Stems whose chain zigzags: on a conifer's trunk scanned from one side the shortest paths
+  // step from whorl to whorl across the bark, so the direction from two nodes up and down leans
+  // 40-50 degrees off the stem and the slab cuts it obliquely (an ellipse, no circle fits). A
+  // node that continues a fitted stem (its heaviest-child line leads down to two fitted nodes)
+  // is fitted again across the axis of that stem (Livny et al. 2010, 4.2: branches are smooth),
+  // parents first, so each fit carries the axis to the next node.
+  if (p.continuation_fits) {
+    const double thin = p.min_hint_spacings * p.spacing;
+    std::vector<double> thickest_child(n, 0.0);
+    for (std::uint32_t v = 0; v < n; ++v) {
+      if (parent[v] < n) thickest_child[parent[v]] = std::max(thickest_child[parent[v]], radius[v]);
+    }
+    for (std::uint32_t v : order) {
+      if (fits[v].ok || fork[v] || radius[v] < thin) continue;
+      std::uint32_t lower = kNone, below = kNone;  // the nearest fitted node down and one beneath
+      for (std::uint32_t c = v, k = 0; k < 8; ++k) {
+        const std::uint32_t u = parent[c];
+        // Down the stem only: through forks where this chain is the thickest way on.
+        if (u >= n || main_child[u] != c || radius[c] < thickest_child[u]) break;
+        c = u;
+        if (!fits[u].ok) continue;
+        if (lower == kNone) {
+          lower = u;
+        } else if ((pos[lower] - pos[u]).norm() >= 2 * std::max(fits[lower].radius, p.spacing)) {
+          below = u;
+          break;
+        }
+      }
+      if (below == kNone) continue;
+      const Eigen::Vector3d d = (pos[lower] - pos[below]).normalized();
+      // Where the chain runs along the stem, the passes above tried this slab already.
+      if (direction_at(v, original, parent, main_child, fork).dot(d) > kSameDirection) continue;
+      const SlabFit f =
+          fit_slab(original[v], d, fits[lower].radius, index, samples, sample_weight, p, noise);
+      if (!f.ok || f.radius > p.max_growth * fits[lower].radius + p.spacing) continue;
+      // The stem continues: the new axis point lies near the line of the fitted stem below (a
+      // slab that cut a fork fits the limb or the crotch, off that line).
+      const Eigen::Vector3d off = f.axis_point - pos[lower];
+      if ((off - off.dot(d) * d).norm() > 0.25 * fits[lower].radius + p.spacing) continue;
+      fits[v] = f;
+      pos[v] = f.axis_point;
+    }
   }
   // Chains whose cross-sections failed: cylinders along them (chain_cylinders.h).
   if (p.chain_cylinders) {

@@ -42,6 +42,8 @@ struct CentreLineParams {
   // A node moves at most this many fitted radii (plus two spacings): it lies on the bark or
   // near it, and a farther circle is another branch's.
   double max_shift = 1.75;
+  // Unfitted nodes that continue a fitted stem are fitted again across that stem's axis.
+  bool continuation_fits = true;
   // Chains with unfitted nodes get cylinders fitted along them (chain_cylinders.h).
   bool chain_cylinders = true;
   // Nodes still unfitted are fitted with their branch's radius on arcs from 60 degrees

@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "reconstruct/bsg/bsg.h"
+#include "reconstruct/bsg/circle_fit.h"
 #include "reconstruct/bsg/kdtree.h"
 
 namespace ramus {
@@ -14,6 +15,7 @@ namespace {
 
 struct Samples {
   std::vector<Eigen::Vector3d> pos;
+  std::vector<Eigen::Vector3d> dir;  // unit direction of the sample's segment
   std::vector<double> radius;
   double length = 0;
   std::size_t tips = 0;
@@ -31,10 +33,12 @@ Samples sample(const std::vector<Skeleton>& skeletons, double spacing) {
       const double len = distance(n.position, p.position);
       s.length += len;
       const int steps = std::clamp(int(std::ceil(len / spacing)), 1, 100000);
+      const Vec3 d = len > 0 ? (n.position - p.position) * (1 / len) : Vec3{0, 0, 1};
       for (int k = 0; k <= steps; ++k) {
         const double t = double(k) / steps;
         const Vec3 q = p.position + (n.position - p.position) * t;
         s.pos.emplace_back(q.x, q.y, q.z);
+        s.dir.emplace_back(d.x, d.y, d.z);
         s.radius.push_back(p.radius + t * (n.radius - p.radius));
       }
     }
@@ -46,9 +50,12 @@ struct Match {
   double within_radius = 0, within_radius_1 = 0, within_distance = 0, mean_distance = 0;
 };
 
-// For each sample of `from`, the nearest sample of `to`; radii come from the truth side.
-Match match(const Samples& from, const Samples& to, bool from_is_truth, const CompareOptions& o) {
+// For each sample of `from`, the nearest sample of `to`; radii come from the truth side. `hit`,
+// when given, gets per sample of `from` whether it is within radius_factor x the radius.
+Match match(const Samples& from, const Samples& to, bool from_is_truth, const CompareOptions& o,
+            std::vector<std::uint8_t>* hit = nullptr) {
   Match m;
+  if (hit) hit->assign(from.pos.size(), 0);
   if (from.pos.empty() || to.pos.empty()) return m;
   bsg::PointIndex index(to.pos);
   for (std::size_t i = 0; i < from.pos.size(); ++i) {
@@ -57,6 +64,7 @@ Match match(const Samples& from, const Samples& to, bool from_is_truth, const Co
     const double d = std::sqrt(d2);
     const double r = std::max(from_is_truth ? from.radius[i] : to.radius[j], o.min_radius);
     m.within_radius += d <= o.radius_factor * r;
+    if (hit) (*hit)[i] = d <= o.radius_factor * r;
     m.within_radius_1 += d <= r;
     m.within_distance += d <= o.distance;
     m.mean_distance += d;
@@ -73,10 +81,47 @@ double quantile(std::vector<double> v, double q) {
   return v[std::size_t(k)];
 }
 
+// Per truth sample: whether the scan's points on its bark cover CompareOptions::seen_arc of its
+// circumference (compare.h). Truth radii unfloored: the bark is where the mesh put it.
+std::vector<std::uint8_t> seen_samples(const Samples& t, const CompareOptions& o) {
+  std::vector<std::uint8_t> seen(t.pos.size(), 0);
+  if (!o.scan || o.scan->empty()) return seen;
+  std::vector<Eigen::Vector3d> pts;
+  pts.reserve(o.scan->size());
+  for (std::size_t i = 0; i < o.scan->size(); ++i) {
+    const Vec3 w = o.scan->world(i);
+    pts.emplace_back(w.x, w.y, w.z);
+  }
+  const bsg::PointIndex index(pts);
+  std::vector<std::uint32_t> near;
+  std::vector<double> angles;
+  for (std::size_t i = 0; i < t.pos.size(); ++i) {
+    const double r = t.radius[i], band = o.bark_band * r + o.bark_floor;
+    const double half = std::max(0.25 * r, o.spacing);
+    const Eigen::Vector3d& x = t.pos[i];
+    const Eigen::Vector3d& d = t.dir[i];
+    const Eigen::Vector3d helper =
+        std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+    const Eigen::Vector3d e1 = d.cross(helper).normalized(), e2 = d.cross(e1);
+    near.clear(), angles.clear();
+    index.within_slab(x, std::hypot(r + band, half), d, half, near);
+    for (std::uint32_t k : near) {
+      const Eigen::Vector3d q = pts[k] - x;
+      if (std::abs(q.dot(d)) > half) continue;
+      const double u = q.dot(e1), v = q.dot(e2);
+      if (std::abs(std::hypot(u, v) - r) > band) continue;
+      angles.push_back(std::atan2(v, u));
+    }
+    seen[i] = angles.size() >= 3 && bsg::angular_coverage(angles) >= o.seen_arc;
+  }
+  return seen;
+}
+
 // Centre-line error per radius class: exact distances to the segments of the nearest samples
 // (the sampling step would otherwise add up to half a step to every distance).
-void centre_errors(const std::vector<Skeleton>& truth, const std::vector<Skeleton>& rec,
-                   const CompareOptions& o, SkeletonComparison& c) {
+void centre_errors(const std::vector<Skeleton>& rec, const Samples& t,
+                   const std::vector<std::uint8_t>& seen, const CompareOptions& o,
+                   SkeletonComparison& c) {
   if (o.radius_classes.size() < 2) return;
   std::vector<Eigen::Vector3d> along, seg_a, seg_b;
   std::vector<std::uint32_t> seg_of;
@@ -94,9 +139,8 @@ void centre_errors(const std::vector<Skeleton>& truth, const std::vector<Skeleto
     }
   }
   const std::size_t classes = o.radius_classes.size() - 1;
-  std::vector<std::vector<double>> rel(classes);
-  std::vector<double> all;
-  const Samples t = sample(truth, o.spacing);
+  std::vector<std::vector<double>> rel(classes), rel_seen(classes);
+  std::vector<double> all, all_seen;
   std::unique_ptr<bsg::PointIndex> index;
   if (!along.empty()) index = std::make_unique<bsg::PointIndex>(along);
   for (std::size_t i = 0; i < t.pos.size(); ++i) {
@@ -116,6 +160,7 @@ void centre_errors(const std::vector<Skeleton>& truth, const std::vector<Skeleto
     }
     rel[k].push_back(best / r);
     all.push_back(best / r);
+    if (seen[i]) rel_seen[k].push_back(best / r), all_seen.push_back(best / r);
   }
   for (std::size_t k = 0; k < classes; ++k) {
     CentreError e;
@@ -128,9 +173,12 @@ void centre_errors(const std::vector<Skeleton>& truth, const std::vector<Skeleto
     e.samples = rel[k].size();
     e.median = quantile(rel[k], 0.5);
     e.p90 = quantile(rel[k], 0.9);
+    e.seen = rel_seen[k].size();
+    e.median_seen = quantile(rel_seen[k], 0.5);
     c.centre_error.push_back(e);
   }
   c.centre_error_median = quantile(all, 0.5);
+  c.centre_error_median_seen = quantile(all_seen, 0.5);
 }
 
 }  // namespace
@@ -140,7 +188,14 @@ SkeletonComparison compare_skeletons(const std::vector<Skeleton>& truth,
                                      const CompareOptions& o) {
   SkeletonComparison c;
   const Samples t = sample(truth, o.spacing), r = sample(reconstructed, o.spacing);
-  const Match precision = match(r, t, false, o), recall = match(t, r, true, o);
+  std::vector<std::uint8_t> hit;
+  const Match precision = match(r, t, false, o), recall = match(t, r, true, o, &hit);
+  const std::vector<std::uint8_t> seen = seen_samples(t, o);
+  std::size_t seen_count = 0, seen_hit = 0;
+  for (std::size_t i = 0; i < seen.size(); ++i)
+    seen_count += seen[i], seen_hit += seen[i] && hit[i];
+  if (!t.pos.empty()) c.seen_fraction = double(seen_count) / double(t.pos.size());
+  if (seen_count > 0) c.recall_seen = double(seen_hit) / double(seen_count);
   c.precision = precision.within_radius;
   c.precision_distance = precision.within_distance;
   c.recall = recall.within_radius;
@@ -153,7 +208,7 @@ SkeletonComparison compare_skeletons(const std::vector<Skeleton>& truth,
   c.length_ratio = t.length > 0 ? r.length / t.length : 0;
   c.branches_truth = t.tips;
   c.branches_reconstructed = r.tips;
-  centre_errors(truth, reconstructed, o, c);
+  centre_errors(reconstructed, t, seen, o, c);
   return c;
 }
 

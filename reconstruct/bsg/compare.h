@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "core/point_cloud.h"
 #include "core/skeleton.h"
 
 namespace ramus {
@@ -16,6 +17,19 @@ struct CompareOptions {
   // Bounds of the radius classes of the centre-line error (truth radii, unfloored), ascending:
   // {0.05, 0.1, 0.2, 0.4, 0.65} gives the classes [5, 10), [10, 20), [20, 40), [40, 65) cm.
   std::vector<double> radius_classes;
+  // The scan the reconstruction came from (in the truth's coordinates, offset applied), or
+  // null. With it, every truth sample is also marked seen or not, and the scores are also given
+  // over the seen wood: a truth sample is seen when scan points on its bark (within
+  // bark_band x its radius + bark_floor of the surface, in a slab of max(radius / 4, spacing)
+  // either side across the segment) cover at least seen_arc radians of its circumference. A
+  // circle's centre is not fixed by less (one_sided_sections.h fits arcs from 60 degrees); a
+  // branch hidden behind others from one station has no points at all. What is not seen no
+  // method can place but by guessing, so the scores over the seen wood say how well the
+  // reconstruction uses the points it has, and the seen share how much a scan allows.
+  const PointCloud* scan = nullptr;
+  double seen_arc = 60.0 * 3.14159265358979323846 / 180;
+  double bark_band = 0.3;
+  double bark_floor = 0.01;
 };
 
 // Centre-line error of one class of truth radii: the distance from each truth sample to the
@@ -27,6 +41,8 @@ struct CentreError {
   // The median over the samples the reconstruction found (within 2 x radius): how well the
   // found branches are centred, apart from the branches missed (which recall counts).
   double median_found = 0;
+  std::size_t seen = 0;    // samples seen by the scan (CompareOptions::scan; 0 without it)
+  double median_seen = 0;  // the median over those
 };
 
 struct SkeletonComparison {
@@ -42,6 +58,10 @@ struct SkeletonComparison {
   std::size_t branches_truth = 0, branches_reconstructed = 0;  // branch tips
   std::vector<CentreError> centre_error;  // one per radius class (CompareOptions)
   double centre_error_median = 0;         // over all classes' samples (0 when no class)
+  // With CompareOptions::scan: the share of the truth's samples the scan saw, the recall (within
+  // radius_factor x radius) over those, and the centre-line error's median over the seen
+  // samples of all classes.
+  double seen_fraction = 0, recall_seen = 0, centre_error_median_seen = 0;
 };
 
 SkeletonComparison compare_skeletons(const std::vector<Skeleton>& truth,

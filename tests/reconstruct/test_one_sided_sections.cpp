@@ -120,4 +120,17 @@ TEST_CASE("one-sided sections: thick_oak from one station, 5-20 cm limbs nearer 
     if (e.lo >= 0.1 && e.hi <= 0.2 + 1e-9) CHECK(e.median <= 0.48);
     if (e.lo >= 0.2 && e.hi <= 0.4 + 1e-9) CHECK(e.median <= 0.15);
   }
+  // Over the wood the scan saw (CompareOptions::scan; 61 % of the truth's samples): recall 0.988,
+  // median error / radius 0.086 / 0.185 / 0.063 in the classes 5-10 / 10-20 / 20-40 cm. Only the
+  // 10-20 cm limbs miss 0.15 where points exist (their forks: docs/reconstruction.md).
+  INFO("seen " << a.seen_fraction << " recall seen " << a.recall_seen);
+  CHECK(a.seen_fraction > 0.5);
+  CHECK(a.seen_fraction < 0.75);
+  CHECK(a.recall_seen >= 0.95);
+  for (const CentreError& e : a.centre_error) {
+    INFO("radii " << e.lo << "-" << e.hi << ": median seen " << e.median_seen << ", n " << e.seen);
+    if (e.lo >= 0.05 && e.hi <= 0.1 + 1e-9) CHECK(e.median_seen <= 0.15);
+    if (e.lo >= 0.1 && e.hi <= 0.2 + 1e-9) CHECK(e.median_seen <= 0.25);
+    if (e.lo >= 0.2 && e.hi <= 0.4 + 1e-9) CHECK(e.median_seen <= 0.15);
+  }
 }
