@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -23,6 +24,17 @@ inline double point_segment_distance(const Eigen::Vector3d& p, const Eigen::Vect
   const double l2 = ab.squaredNorm();
   const double t = l2 > 0 ? std::clamp((p - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
   return (p - a - t * ab).norm();
+}
+
+// Two unit vectors that make (e1, e2, d) an orthonormal frame around the unit direction d: the
+// plane of a cross-section. Every slab, cylinder and cover pattern takes the same frame (the
+// helper axis z, or x for directions within 26 degrees of it).
+inline void perpendicular_frame(const Eigen::Vector3d& d, Eigen::Vector3d& e1,
+                                Eigen::Vector3d& e2) {
+  const Eigen::Vector3d helper =
+      std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
+  e1 = d.cross(helper).normalized();
+  e2 = d.cross(e1);
 }
 
 struct Arc {

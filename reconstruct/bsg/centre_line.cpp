@@ -14,6 +14,23 @@
 
 namespace ramus::bsg {
 
+void gather_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, const Eigen::Vector3d& e1,
+                 const Eigen::Vector3d& e2, double reach, double half, const PointIndex& index,
+                 const std::vector<Eigen::Vector3d>& samples, const std::vector<double>& weight,
+                 std::vector<std::uint32_t>& near, std::vector<Eigen::Vector2d>& pts,
+                 std::vector<double>& w) {
+  near.clear(), pts.clear(), w.clear();
+  index.within_slab(x, std::sqrt(reach * reach + half * half), d, half, near);
+  for (std::uint32_t i : near) {
+    const Eigen::Vector3d q = samples[i] - x;
+    if (std::abs(q.dot(d)) > half) continue;
+    const Eigen::Vector2d uv(q.dot(e1), q.dot(e2));
+    if (uv.squaredNorm() > reach * reach) continue;
+    pts.push_back(uv);
+    w.push_back(weight.empty() ? 1.0 : weight[i]);
+  }
+}
+
 void thin_slab(std::vector<Eigen::Vector2d>& pts, std::vector<double>& w, int max_points) {
   if (max_points <= 0 || int(pts.size()) <= max_points) return;
   const std::size_t stride = (pts.size() + max_points - 1) / max_points;
@@ -56,9 +73,8 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
                  const PointIndex& index, const std::vector<Eigen::Vector3d>& samples,
                  const std::vector<double>& weight, const CentreLineParams& p, double noise) {
   SlabFit out;
-  const Eigen::Vector3d helper =
-      std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
-  const Eigen::Vector3d e1 = d.cross(helper).normalized(), e2 = d.cross(e1);
+  Eigen::Vector3d e1, e2;
+  perpendicular_frame(d, e1, e2);
   // The first disc is at most 20 spacings wide (a generous hint would gather thousands of points
   // for every node); it grows below when the circle reaches beyond it.
   double r0 = std::clamp(hint, 2 * p.spacing, 20 * p.spacing);
@@ -70,17 +86,7 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
   for (int attempt = 0; attempt < 4; ++attempt) {
     const double reach = std::max(2.5 * r0, 5 * p.spacing);
     const double half = thicken * std::max(0.3 * r0, 1.5 * p.spacing);
-    near.clear();
-    index.within_slab(x, std::sqrt(reach * reach + half * half), d, half, near);
-    pts.clear(), w.clear();
-    for (std::uint32_t i : near) {
-      const Eigen::Vector3d q = samples[i] - x;
-      if (std::abs(q.dot(d)) > half) continue;
-      const Eigen::Vector2d uv(q.dot(e1), q.dot(e2));
-      if (uv.squaredNorm() > reach * reach) continue;
-      pts.push_back(uv);
-      w.push_back(weight.empty() ? 1.0 : weight[i]);
-    }
+    gather_slab(x, d, e1, e2, reach, half, index, samples, weight, near, pts, w);
     if (pts.size() < 8 && thicken == 1 && pts.size() >= 3) {
       thicken = 2;
       continue;

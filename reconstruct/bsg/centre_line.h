@@ -18,6 +18,7 @@
 
 #include "core/skeleton.h"
 #include "reconstruct/bsg/bsg.h"
+#include "reconstruct/bsg/kdtree.h"
 
 namespace ramus::bsg {
 
@@ -83,6 +84,17 @@ void subdivide_long_edges(Bsg& bsg, double spacing, double min_radius, double ed
 // trunks); once the stem is centred they lie inside it. Returns the number of vertices removed.
 std::size_t drop_branches_inside_stems(Bsg& bsg, const std::vector<std::uint8_t>& fitted,
                                        double spacing);
+
+// The cross-section of the samples at x across the unit direction d: the samples within `half`
+// of x along d and within `reach` of it across, as coordinates (u, v) in the frame (e1, e2) of
+// perpendicular_frame(d) (bsg.h), with their weights (1 each when `weight` is empty), in the
+// order the index gives them. `near` is scratch. Shared by the cross-sections and the one-sided
+// sections (one_sided_sections.h).
+void gather_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, const Eigen::Vector3d& e1,
+                 const Eigen::Vector3d& e2, double reach, double half, const PointIndex& index,
+                 const std::vector<Eigen::Vector3d>& samples, const std::vector<double>& weight,
+                 std::vector<std::uint32_t>& near, std::vector<Eigen::Vector2d>& pts,
+                 std::vector<double>& w);
 
 // Thins a slab's points and their weights evenly (every k-th, k the smallest stride that keeps
 // at most `max_points`); a slab of thousands of points fits no better than of a few hundred.

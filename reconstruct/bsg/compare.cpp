@@ -100,9 +100,8 @@ std::vector<std::uint8_t> seen_samples(const Samples& t, const CompareOptions& o
     const double half = std::max(0.25 * r, o.spacing);
     const Eigen::Vector3d& x = t.pos[i];
     const Eigen::Vector3d& d = t.dir[i];
-    const Eigen::Vector3d helper =
-        std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
-    const Eigen::Vector3d e1 = d.cross(helper).normalized(), e2 = d.cross(e1);
+    Eigen::Vector3d e1, e2;
+    bsg::perpendicular_frame(d, e1, e2);
     near.clear(), angles.clear();
     index.within_slab(x, std::hypot(r + band, half), d, half, near);
     for (std::uint32_t k : near) {

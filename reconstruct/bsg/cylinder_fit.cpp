@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "reconstruct/bsg/bsg.h"
 #include "reconstruct/bsg/circle_fit.h"
 
 namespace ramus::bsg {
@@ -13,13 +14,6 @@ namespace ramus::bsg {
 namespace {
 
 double weight_of(const std::vector<double>& w, std::size_t i) { return w.empty() ? 1.0 : w[i]; }
-
-void frame(const Eigen::Vector3d& d, Eigen::Vector3d& e1, Eigen::Vector3d& e2) {
-  const Eigen::Vector3d helper =
-      std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
-  e1 = d.cross(helper).normalized();
-  e2 = d.cross(e1);
-}
 
 // One fit from one start direction; `score` gets its consensus (as in circle_fit.cpp: each
 // point within 2.5 noise of the surface counts with a truncated quadratic).
@@ -31,7 +25,7 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
   const std::size_t n = pts.size();
   if (n < 8 || !(direction.norm() > 0)) return out;
   Eigen::Vector3d d = direction.normalized(), e1, e2;
-  frame(d, e1, e2);
+  perpendicular_frame(d, e1, e2);
   // 1. The circle of the points seen along the start direction.
   // Per-thread work space (chain_cylinders.h fits hundreds of pieces, twice each).
   thread_local std::vector<Eigen::Vector2d> uv;
@@ -112,7 +106,7 @@ CylinderFit fit_from(const std::vector<Eigen::Vector3d>& pts, const std::vector<
     r += step(4);
     // Keep q level with the gathering point and the frame perpendicular to d.
     q += (start - q).dot(d) * d;
-    frame(d, e1, e2);
+    perpendicular_frame(d, e1, e2);
     residuals();
     if (step.norm() < 1e-6 * std::max(std::abs(r), 1e-9)) break;
   }

@@ -57,9 +57,8 @@ bool covers_more_than(const Cylinder& c, const std::vector<Cylinder>& others, do
   if (len <= 0) return 1.0 > overlap;
   static const CoverPattern pattern;
   const Eigen::Vector3d d = axis / len;
-  const Eigen::Vector3d helper =
-      std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
-  const Eigen::Vector3d e1 = d.cross(helper).normalized(), e2 = d.cross(e1);
+  Eigen::Vector3d e1, e2;
+  perpendicular_frame(d, e1, e2);
   constexpr int total = int(CoverPattern::kT.size()) * CoverPattern::kPerSection;
   // The fraction inside/total is compared exactly as a full count would be.
   auto more = [&](int inside) { return double(inside) / double(total) > overlap; };

@@ -181,21 +181,12 @@ std::size_t fit_one_sided_sections(std::vector<Eigen::Vector3d>& pos,
     Eigen::Vector3d d = pos[b] - pos[a];
     if (!(d.norm() > 0)) return false;
     d.normalize();
-    const Eigen::Vector3d helper =
-        std::abs(d.z()) < 0.9 ? Eigen::Vector3d::UnitZ() : Eigen::Vector3d::UnitX();
-    fr.e1 = d.cross(helper).normalized(), fr.e2 = d.cross(fr.e1), fr.x = pos[v];
+    perpendicular_frame(d, fr.e1, fr.e2);
+    fr.x = pos[v];
+    // Reach and thickness as the cross-sections' first disc (centre_line.cpp, fit_slab).
     const double reach = std::max(2.5 * size, 5 * p.spacing);
     const double half = std::max(0.3 * size, 1.5 * p.spacing);
-    near.clear(), pts.clear(), w.clear();
-    index.within_slab(fr.x, std::sqrt(reach * reach + half * half), d, half, near);
-    for (std::uint32_t i : near) {
-      const Eigen::Vector3d q = samples[i] - fr.x;
-      if (std::abs(q.dot(d)) > half) continue;
-      const Eigen::Vector2d uv(q.dot(fr.e1), q.dot(fr.e2));
-      if (uv.squaredNorm() > reach * reach) continue;
-      pts.push_back(uv);
-      w.push_back(weight.empty() ? 1.0 : weight[i]);
-    }
+    gather_slab(fr.x, d, fr.e1, fr.e2, reach, half, index, samples, weight, near, pts, w);
     if (pts.size() < 8) return false;
     thin_slab(pts, w, p.max_slab_points);
     return true;
