@@ -52,6 +52,13 @@ class Emitter {
     throw CompileError("unknown name '" + r.name + "'", span);
   }
   void node(const ast::Unary& u, SourceSpan) {
+    // A negative literal is one constant, as a negative named constant is: `l * -30` and
+    // `l * a2` with `const a2 = -30` compile to the same code (the decompiler prints constants
+    // as literals, so a .rmb decompiles and compiles back to the code it holds).
+    if (const auto* n = std::get_if<ast::NumberLit>(&u.operand->node);
+        n && u.op == ast::UnaryOp::Neg) {
+      return push_const(-n->value);
+    }
     expr(*u.operand);
     if (u.op == ast::UnaryOp::Neg) emit(ir::Op::Neg, 0, 0);
     if (u.op == ast::UnaryOp::Not) emit(ir::Op::Not, 0, 0);

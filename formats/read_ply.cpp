@@ -187,6 +187,16 @@ Header parse_header(std::string_view bytes, const std::string& file) {
       }
       e.name = std::string(tok[1]);
       e.line = n;
+      // Two elements of one name leave it open which one holds the data (the reader would take
+      // the first, the property checks the last: a property-less `vertex` of 500 million
+      // zero-byte records, then one with x, y, z).
+      for (const Element& other : h.elements) {
+        if (other.name == e.name) {
+          fail_at_line(file, n,
+                       "element " + quoted(e.name) + " is declared twice (first on line " +
+                           std::to_string(other.line) + ")");
+        }
+      }
       h.elements.push_back(std::move(e));
     } else if (tok[0] == "property") {
       parse_property(tok, h, file, n);

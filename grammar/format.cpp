@@ -78,7 +78,10 @@ class Printer {
   void comment_line(const ast::Comment& c, int indent) {
     out_ += std::string(2 * indent, ' ') + trimmed(c.text) + "\n";
     prev_end_ = c.span.end;
+    if (is_line_comment(c)) line_comment_end_ = out_.size();
   }
+
+  static bool is_line_comment(const ast::Comment& c) { return c.text.rfind("//", 0) == 0; }
 
   // Comments that start before `pos`, each on its own line.
   void leading(std::uint32_t pos, int indent, bool& first) {
@@ -103,8 +106,19 @@ class Printer {
     while (next_ < file_.comments.size() && file_.comments[next_].span.begin < limit &&
            same_line(end, file_.comments[next_].span.begin)) {
       const ast::Comment& c = file_.comments[next_++];
-      out_.pop_back();  // the newline
-      out_ += (any ? " " : "  ") + trimmed(c.text) + "\n";
+      if (out_.size() == line_comment_end_) {
+        // The line just printed ends in a `//` comment (a comment moved before the code's end,
+        // such as one after a rule's last alternative when its `;` follows on the next line):
+        // appended, this comment would become part of that one. It gets a line of its own, at
+        // that line's indentation.
+        const std::size_t start = out_.rfind('\n', out_.size() - 2) + 1;  // npos + 1 == 0
+        const std::size_t indent = out_.find_first_not_of(' ', start) - start;
+        out_ += std::string(indent, ' ') + trimmed(c.text) + "\n";
+      } else {
+        out_.pop_back();  // the newline
+        out_ += (any ? " " : "  ") + trimmed(c.text) + "\n";
+      }
+      if (is_line_comment(c)) line_comment_end_ = out_.size();
       end = prev_end_ = c.span.end;
       any = true;
     }
@@ -234,7 +248,10 @@ class Printer {
   std::string out_;
   std::size_t next_ = 0;        // the next comment to place
   std::uint32_t prev_end_ = 0;  // where the last placed code or comment ends in the source
-  bool hoisted_first_ = true;   // no blank line before a moved comment
+  // The size of out_ right after a line that ends in a `//` comment (nothing may follow it on
+  // that line); npos when no such line was printed.
+  std::size_t line_comment_end_ = std::string::npos;
+  bool hoisted_first_ = true;  // no blank line before a moved comment
 };
 
 }  // namespace

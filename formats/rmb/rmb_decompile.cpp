@@ -244,7 +244,7 @@ class Decompiler {
     for (const ir::Pattern& q : p.left) out.left_context.push_back(pattern(q));
     out.predecessor = pattern(p.predecessor);
     for (const ir::Pattern& q : p.right) out.right_context.push_back(pattern(q));
-    if (p.guard != ir::kNoCode) out.guard = code(p.guard);
+    if (p.guard != ir::kNoCode) out.guard = guard(p.guard);
     for (double k : p.key) out.key.push_back(number(k));  // its point in rule space
     for (std::uint32_t a = p.alt_begin; a < p.alt_end; ++a) {
       const ir::Alternative& alt = g_.alternatives.at(a);
@@ -261,6 +261,17 @@ class Decompiler {
   ast::Expr code(ir::CodeId c) {
     const ir::Code& k = g_.codes.at(c);
     return range(k.begin, k.end);
+  }
+
+  // A guard the compiler folded to one constant (`trunk_width > 0` with a param, which lowering
+  // makes a constant): the derivation takes it when it is not 0, so it reads `true` or `false`;
+  // printed as a number it would not check (a guard is a boolean).
+  ast::Expr guard(ir::CodeId c) {
+    const ir::Code& k = g_.codes.at(c);
+    if (k.end == k.begin + 1 && g_.code[k.begin].op == ir::Op::Const) {
+      return make(ast::BoolLit{!(g_.consts.at(g_.code[k.begin].a) == 0)});
+    }
+    return code(c);
   }
 
   ast::Expr constant(double v) {

@@ -141,6 +141,12 @@ TEST_CASE("ply: header errors name the line", "[ply][errors]") {
         }) == "t.ply: line 3: element 'vertex' has no scalar property 'z'");
   CHECK(error_of([&] { ply("ply\nformat ascii 1.0\nelement face 0\nend_header\n"); }) ==
         "t.ply: the header declares no 'vertex' element");
+  // Found by fuzz_read_ply: a property-less vertex element of 512 million records, then a second
+  // one with x, y, z; the reader took the first and filled memory.
+  CHECK(error_of([&] {
+          ply("ply\nformat binary_big_endian 1.0\nelement vertex 512222222\nelement vertex 3\n"
+              "property float x\nproperty float y\nproperty float z\nend_header\n");
+        }) == "t.ply: line 4: element 'vertex' is declared twice (first on line 3)");
   CHECK(error_of([&] {
           ply("ply\nformat ascii 1.0\nelement vertex 0\nproperty float x\n"
               "property float y\nproperty float z\nend_header\n");
