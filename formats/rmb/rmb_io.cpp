@@ -115,7 +115,10 @@ Writer::QuantizedChoice Writer::choose_quantized(double v) const {
   double q = v;
   std::optional<std::uint64_t> tagged;
   if (std::isfinite(v)) {
-    const double k = std::nearbyint(std::ldexp(v, -exponent_));
+    // + 0.0: a value that rounds to -0 (-0 itself, or a negative one under half a quantum) is
+    // stored as the multiple 0, which reads back as +0; so the value this choice stores must be
+    // +0 too, or two pool entries (+0 and -0) would be one after decoding and re-encoding.
+    const double k = std::nearbyint(std::ldexp(v, -exponent_)) + 0.0;
     if (std::fabs(k) <= double(kMaxQuantumMultiple)) {
       q = std::ldexp(k, exponent_);
       tagged = ((zigzag(std::int64_t(k)) + 1) << 3) | 7;
@@ -169,7 +172,7 @@ void Writer::real(double v) {
 double Writer::stored_real(double v) const {
   if (!quantized_ || !std::isfinite(v)) return v;
   if (decimal_) return choose_quantized(v).value;
-  const double k = std::nearbyint(std::ldexp(v, -exponent_));
+  const double k = std::nearbyint(std::ldexp(v, -exponent_)) + 0.0;  // as choose_quantized
   return std::fabs(k) <= double(kMaxQuantumMultiple) ? std::ldexp(k, exponent_) : v;
 }
 
