@@ -6,6 +6,7 @@
 #include <memory>
 
 #include "reconstruct/bsg/bsg.h"
+#include "reconstruct/bsg/centre_line.h"
 #include "reconstruct/bsg/circle_fit.h"
 #include "reconstruct/bsg/kdtree.h"
 
@@ -94,22 +95,18 @@ std::vector<std::uint8_t> seen_samples(const Samples& t, const CompareOptions& o
   }
   const bsg::PointIndex index(pts);
   std::vector<std::uint32_t> near;
-  std::vector<double> angles;
+  std::vector<Eigen::Vector2d> uv;
+  std::vector<double> w, angles;
   for (std::size_t i = 0; i < t.pos.size(); ++i) {
     const double r = t.radius[i], band = o.bark_band * r + o.bark_floor;
     const double half = std::max(0.25 * r, o.spacing);
-    const Eigen::Vector3d& x = t.pos[i];
-    const Eigen::Vector3d& d = t.dir[i];
     Eigen::Vector3d e1, e2;
-    bsg::perpendicular_frame(d, e1, e2);
-    near.clear(), angles.clear();
-    index.within_slab(x, std::hypot(r + band, half), d, half, near);
-    for (std::uint32_t k : near) {
-      const Eigen::Vector3d q = pts[k] - x;
-      if (std::abs(q.dot(d)) > half) continue;
-      const double u = q.dot(e1), v = q.dot(e2);
-      if (std::abs(std::hypot(u, v) - r) > band) continue;
-      angles.push_back(std::atan2(v, u));
+    bsg::perpendicular_frame(t.dir[i], e1, e2);
+    // The cross-section's disc out to the band's outer edge, then the band itself.
+    bsg::gather_slab(t.pos[i], t.dir[i], e1, e2, r + band, half, index, pts, {}, near, uv, w);
+    angles.clear();
+    for (const Eigen::Vector2d& p : uv) {
+      if (std::abs(p.norm() - r) <= band) angles.push_back(std::atan2(p.y(), p.x()));
     }
     seen[i] = angles.size() >= 3 && bsg::angular_coverage(angles) >= o.seen_arc;
   }
