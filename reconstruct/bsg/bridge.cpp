@@ -4,6 +4,7 @@
 #include <tbb/parallel_for.h>
 
 #include <Eigen/Eigenvalues>
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -29,6 +30,7 @@ struct Fragment {
   Eigen::Vector3d axis = Eigen::Vector3d::UnitZ();
   std::array<std::uint32_t, 2> end{kNone, kNone};
   std::array<Gap, 2> ahead;
+  std::array<Gap, 2> ahead_far;  // the same within the hidden-limb reach, when it has one
 };
 
 std::vector<Fragment> fragments(const Graph& g, const std::vector<std::uint32_t>& label,
@@ -107,6 +109,18 @@ std::size_t bridge_gaps(Graph& graph, const std::vector<std::uint32_t>& roots,
   std::vector<std::uint8_t> attached(ncomp, 0);
   for (std::uint32_t r : roots) attached[label[r]] = 1;
   std::vector<Fragment> frag = fragments(graph, label, ncomp, attached, params);
+  // Each component's reach (squared): max_gap, or hidden_limb_gap when it is long enough.
+  std::vector<double> reach2(ncomp, max_gap * max_gap);
+  bool any_hidden = false, hidden_phase = false;
+  if (params.hidden_limb_gap > max_gap && params.hidden_limb_length > 0) {
+    std::vector<Eigen::AlignedBox3d> box(ncomp);
+    for (std::uint32_t v = 0; v < graph.size(); ++v) box[label[v]].extend(graph.pos[v]);
+    for (std::uint32_t c = 0; c < ncomp; ++c) {
+      if (attached[c] || box[c].diagonal().norm() < params.hidden_limb_length) continue;
+      reach2[c] = params.hidden_limb_gap * params.hidden_limb_gap;
+      any_hidden = true;
+    }
+  }
   const double cone = params.cone_degrees * M_PI / 180;
   const double cos_cone = std::cos(cone), sin_cone = std::sin(cone);
   const double penalty2 = params.off_axis_penalty * params.off_axis_penalty;
@@ -145,6 +159,10 @@ std::size_t bridge_gaps(Graph& graph, const std::vector<std::uint32_t>& roots,
           const Eigen::Vector3d out = k == 0 ? Eigen::Vector3d(-frag[c].axis) : frag[c].axis;
           const Gap g = nearest_ahead(index, graph, e, out, max_gap, sin_cone);
           if (g.d2 < frag[c].ahead[k].d2) frag[c].ahead[k] = g;
+          if (reach2[c] > max_gap * max_gap) {
+            const Gap f = nearest_ahead(index, graph, e, out, std::sqrt(reach2[c]), sin_cone);
+            if (f.d2 < frag[c].ahead_far[k].d2) frag[c].ahead_far[k] = f;
+          }
         }
       });
     }
@@ -157,17 +175,21 @@ std::size_t bridge_gaps(Graph& graph, const std::vector<std::uint32_t>& roots,
     }
     std::vector<double> rank(ncomp, std::numeric_limits<double>::infinity());
     for (std::uint32_t c = 0; c < ncomp; ++c) {
-      if (attached[c] || gaps[c].to == kNone || gaps[c].d2 > max_gap * max_gap) {
-        gaps[c] = {};
-      } else {
-        rank[c] = gaps[c].d2;
+      if (attached[c]) continue;
+      // Hidden limbs reach farther only once nothing else can be bridged.
+      const bool far = hidden_phase && reach2[c] > max_gap * max_gap;
+      const Gap closest = gaps[c];
+      gaps[c] = {};
+      if (closest.to != kNone && closest.d2 <= (far ? reach2[c] : max_gap * max_gap)) {
+        gaps[c] = closest;
+        rank[c] = closest.d2;
       }
-      if (attached[c] || !frag[c].elongated) continue;
+      if (!frag[c].elongated) continue;
       if (gaps[c].to != kNone) {
         const Eigen::Vector3d link = graph.pos[gaps[c].to] - graph.pos[gaps[c].from];
         if (std::abs(link.dot(frag[c].axis)) < cos_cone * link.norm()) rank[c] *= penalty2;
       }
-      for (const Gap& a : frag[c].ahead) {
+      for (const Gap& a : far ? frag[c].ahead_far : frag[c].ahead) {
         if (a.to != kNone && a.d2 < rank[c]) gaps[c] = a, rank[c] = a.d2;
       }
     }
@@ -175,7 +197,11 @@ std::size_t bridge_gaps(Graph& graph, const std::vector<std::uint32_t>& roots,
     for (std::uint32_t c = 0; c < ncomp; ++c) {
       if (!attached[c]) smallest = std::min(smallest, rank[c]);
     }
-    if (!std::isfinite(smallest)) break;
+    if (!std::isfinite(smallest)) {
+      if (hidden_phase || !any_hidden) break;
+      hidden_phase = true;
+      continue;
+    }
     const double limit = 4 * smallest;
     std::vector<std::uint8_t> now(ncomp, 0);
     for (std::uint32_t c = 0; c < ncomp; ++c) {

@@ -365,6 +365,10 @@ std::size_t drop_branches_inside_stems(Bsg& b, const std::vector<std::uint8_t>& 
     }
     return false;
   };
+  // A duplicate of a stem that hangs from a neighbouring branch (the shortest paths to the upper
+  // trunk of a one-station scan ran through a limb's base and back) crosses from its fork to the
+  // stem outside both: up to a quarter of its nodes may lie outside, its tip may not.
+  constexpr double kMaxOutsideShare = 0.25;
   std::size_t removed = 0;
   for (int round = 0; round < 4; ++round) {
     std::size_t this_round = 0;
@@ -380,15 +384,12 @@ std::size_t drop_branches_inside_stems(Bsg& b, const std::vector<std::uint8_t>& 
       const std::uint32_t fork = b.parent[chain.back()];
       if (fork == kNone || children[fork] < 2) continue;  // the trunk's own top
       for (std::uint32_t v : chain) in_chain[v] = 1;
-      bool all_inside = true;
-      for (std::uint32_t v : chain) {
-        if (!inside_other(b.pos[v])) {
-          all_inside = false;
-          break;
-        }
-      }
+      std::size_t outside = 0;
+      for (std::uint32_t v : chain) outside += !inside_other(b.pos[v]);
+      const bool inside =
+          inside_other(b.pos[tip]) && double(outside) <= kMaxOutsideShare * double(chain.size());
       for (std::uint32_t v : chain) in_chain[v] = 0;
-      if (!all_inside) continue;
+      if (!inside) continue;
       for (std::uint32_t v : chain) alive[v] = 0;
       --children[fork];
       this_round += chain.size();

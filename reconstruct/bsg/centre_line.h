@@ -77,11 +77,13 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
 void subdivide_long_edges(Bsg& bsg, double spacing, double min_radius, double edge_radii = 2.0,
                           double edge_spacings = 4.0);
 
-// Removes side branches that never leave a stem: leaf chains (tip back to the fork) whose every
-// node lies within 1.1 x the radius (plus two spacings) of an edge of another branch whose ends
-// were both fitted. These are the shortest paths that ran along the bark of a thick stem beside
-// the one that became its skeleton (issue 19: 3-9 x the true length on trees with 30-60 cm
-// trunks); once the stem is centred they lie inside it. Returns the number of vertices removed.
+// Removes side branches that never leave a stem: leaf chains (tip back to the fork) whose tip and
+// at least three quarters of their nodes lie within 1.1 x the radius (plus two spacings) of an
+// edge of another branch whose ends were both fitted. These are the shortest paths that ran along
+// the bark of a thick stem beside the one that became its skeleton (issue 19: 3-9 x the true
+// length on trees with 30-60 cm trunks); once the stem is centred they lie inside it, but for the
+// stretch from a fork on a neighbouring limb across to the stem. Returns the number of vertices
+// removed.
 std::size_t drop_branches_inside_stems(Bsg& bsg, const std::vector<std::uint8_t>& fitted,
                                        double spacing);
 

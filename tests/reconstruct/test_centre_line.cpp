@@ -221,3 +221,36 @@ TEST_CASE("centre line: a zigzag chain up a half-seen stem is cut across the ste
   CHECK(with.fitted >= without.fitted + 8);
   CHECK(with.worst <= 0.25 * 0.2);
 }
+
+TEST_CASE("centre line: a copy of the trunk hung from a limb's base goes, a twig from it stays",
+          "[centre_line]") {
+  // A trunk (radius 0.2) up z, a limb (radius 0.1) from its node at z = 1 out along x, both
+  // fitted. From the limb's first node hang: a chain that crosses back (two nodes outside both
+  // stems) and runs up inside the trunk, as the shortest paths of a one-station scan do; and a
+  // chain that crosses the same way but leaves the trunk again at its tip.
+  bsg::Bsg b;
+  std::vector<std::uint8_t> fitted;
+  auto add = [&](Eigen::Vector3d p, std::uint32_t parent, double r, bool fit) {
+    b.pos.push_back(p), b.parent.push_back(parent), b.vertex.push_back(bsg::kNone);
+    b.weight.push_back(1), b.radius.push_back(r), b.mass.push_back(1);
+    fitted.push_back(fit);
+    return std::uint32_t(b.size() - 1);
+  };
+  std::uint32_t up = bsg::kNone;
+  for (int k = 0; k <= 5; ++k) up = add({0, 0, 0.5 * k}, up, 0.2, true);
+  const std::uint32_t limb = add({0.5, 0, 1.2}, 2, 0.1, true);
+  add({1.0, 0, 1.4}, limb, 0.1, true);
+  auto crossing = [&](bool leaves) {
+    std::uint32_t v = add({0.45, 0, 1.35}, limb, 0.05, false);
+    v = add({0.3, 0, 1.45}, v, 0.05, false);
+    for (int k = 0; k < 6; ++k) v = add({0.1, 0, 1.55 + 0.15 * k}, v, 0.05, false);
+    if (leaves) add({0.6, 0, 2.4}, v, 0.05, false);
+  };
+  crossing(false);  // 8 nodes, 2 outside: goes
+  crossing(true);   // its tip outside the trunk: stays
+  const std::size_t before = b.size();
+  CHECK(bsg::drop_branches_inside_stems(b, fitted, 0.01) == 8);
+  REQUIRE(b.size() == before - 8);
+  CHECK(b.pos.back().isApprox(Eigen::Vector3d(0.6, 0, 2.4)));
+  CHECK(b.parent[8] == limb);  // the survivor's first node, renumbered after the removal
+}

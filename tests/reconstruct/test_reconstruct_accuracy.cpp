@@ -178,9 +178,10 @@ TEST_CASE("reconstruct accuracy: thick tree, three stations: nodes on the axes",
   CHECK(b.at_radius.centre_error_median > 2 * a.centre_error_median);
 }
 
-// One station sees half of every stem. Measured: precision / recall within 2 x radius 0.965 /
-// 0.798 (the occluded limbs are missing), median error / radius 0.101 / 0.108 / 0.047 in the
-// classes 5-10 / 10-20 / 20-40 cm over all samples, 0.059 / 0.061 / 0.047 over the found ones.
+// One station sees half of every stem. Measured: precision / recall within 2 x radius 0.953 /
+// 0.901, median error / radius 0.072 / 0.120 / 0.052 in the classes 5-10 / 10-20 / 20-40 cm
+// over all samples, 0.060 / 0.115 / 0.052 over the found ones. Until hidden limbs were bridged
+// (bridge.h) the recall was 0.798: a 10-12 cm limb seen only beyond the trunk was dropped.
 // Cross-sections alone left the limbs at 0.60 / 0.28 (found 0.43 / 0.135): the chain cylinders
 // and bridges (chain_cylinders.h) put them on their axes; before the forks were placed where
 // the axes meet (fork_placement.h) the 10-20 cm class was at 0.194 over all samples, its limbs
@@ -195,15 +196,15 @@ TEST_CASE("reconstruct accuracy: thick tree, one station: trunk and limbs on the
   INFO("precision " << a.precision << " recall " << a.recall);
   REQUIRE(r.trees == 1);
   CHECK(a.precision >= 0.95);
-  CHECK(a.recall >= 0.75);
+  CHECK(a.recall >= 0.9);
   check_centre_classes(a, 0.05, 0.15, true);
   // Over all samples too, a limb hidden behind the trunk included.
   check_centre_classes(a, 0.05, 0.15, false);
-  // The scan sees 84 % of the tree's samples; of those the reconstruction finds 0.893 (measured;
-  // the issue's 0.90 is not met on this tree even over the seen wood).
+  // The scan sees 84 % of the tree's samples; of those the reconstruction finds 0.968 (measured;
+  // 0.896 before the hidden limbs).
   INFO("seen " << a.seen_fraction << " recall seen " << a.recall_seen);
   CHECK(a.seen_fraction > 0.75);
-  CHECK(a.recall_seen >= 0.85);
+  CHECK(a.recall_seen >= 0.95);
   for (const CentreError& e : a.centre_error) {
     if (e.lo < 0.05 || e.seen < 100) continue;
     INFO("radii " << e.lo << "-" << e.hi << ": median seen " << e.median_seen);
