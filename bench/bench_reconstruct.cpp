@@ -6,11 +6,13 @@
 //                                            ~1M-point cloud
 // FLAGS (before the files they apply to): --noise S (metres), --density D, --leaves (scan the
 // leaf cards too), --opt name=value (a ReconstructOptions field, for parameter sweeps: voxel,
-// voxel_spacings, voxel_floor, neighbours, max_gap, contraction, iterations, overlap, min_branch,
-// min_cylinder, ground_band, terrain), --stations N (only N stations instead of 1 and 3), --dump
-// PREFIX (write the truth and the reconstruction as skeleton JSON, the scan as .xyz), --repeat N
-// (time: reconstruct each scan N times; cpu= is the least CPU time, user + system of all threads,
-// of one reconstruction). Prints one line per run and the peak resident memory at the end.
+// voxel_spacings, voxel_floor, neighbours, max_gap, hidden_limb_reach, contraction, iterations,
+// overlap, min_branch, min_cylinder, ground_band, terrain), --stations N (only N stations instead
+// of 1 and 3), --dump PREFIX (write the truth and the reconstruction as skeleton JSON, the scan as
+// .xyz), --azimuth DEG (turn the tree by DEG about the vertical through its root before scanning:
+// the stations see another side of it), --repeat N (time: reconstruct each scan N times; cpu= is
+// the least CPU time, user + system of all threads, of one reconstruction). Prints one line per run
+// and the peak resident memory at the end.
 #include <sys/resource.h>
 #include <time.h>
 
@@ -56,6 +58,8 @@ void set_option(ReconstructOptions& o, const std::string& kv) {
     o.neighbours = int(v);
   else if (k == "max_gap")
     o.max_gap = v;
+  else if (k == "hidden_limb_reach")
+    o.hidden_limb_reach = v;
   else if (k == "contraction")
     o.contraction_steps = int(v);
   else if (k == "axis_levels")
@@ -84,17 +88,37 @@ void set_option(ReconstructOptions& o, const std::string& kv) {
 
 ReconstructOptions g_options;
 std::vector<int> g_stations = {1, 3};  // --stations N: only N stations
-std::string g_dump;  // --dump PREFIX: writes PREFIX<tree>-<stations>.truth.json / .rec.json
-int g_repeat = 1;    // --repeat N: time mode reconstructs each scan N times
+std::string g_dump;    // --dump PREFIX: writes PREFIX<tree>-<stations>.truth.json / .rec.json
+int g_repeat = 1;      // --repeat N: time mode reconstructs each scan N times
+double g_azimuth = 0;  // --azimuth DEG: the tree turned about its root's vertical
+
+// `t` turned by `degrees` about the vertical through its first node (frames and organs too).
+void turn_about_root(Skeleton& t, double degrees) {
+  if (degrees == 0 || t.nodes.empty()) return;
+  const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a);
+  const Vec3 o = t.nodes[0].position;
+  auto dir = [&](Vec3& v) { v = Vec3(c * v.x - s * v.y, s * v.x + c * v.y, v.z); };
+  auto point = [&](Vec3& p) {
+    Vec3 d = p - o;
+    dir(d);
+    p = o + d;
+  };
+  for (SkeletonNode& n : t.nodes) point(n.position), dir(n.heading), dir(n.left), dir(n.up);
+  for (OrganAnchor& g : t.organs) {
+    point(g.position), dir(g.heading), dir(g.left), dir(g.up);
+    for (Vec3& v : g.vertices) point(v);
+  }
+}
 
 void accuracy(const std::string& path, const scanner::HarnessCase& base) {
   // "synthetic": the thick-branched test tree of tests/reconstruct/reconstruct_fixtures.h;
   // "thick": its 14 m, 60 cm trunk variant (radii 5-60 cm), "thick-small" the 8 m, 30 cm one
   // the tests scan.
-  const Skeleton t = path == "synthetic"     ? test::synthetic_tree(7, {0, 0, 0})
-                     : path == "thick"       ? test::thick_tree(11, 14.0, 0.6)
-                     : path == "thick-small" ? test::thick_tree(5, 8.0, 0.3)
-                                             : grow(path);
+  Skeleton t = path == "synthetic"     ? test::synthetic_tree(7, {0, 0, 0})
+               : path == "thick"       ? test::thick_tree(11, 14.0, 0.6)
+               : path == "thick-small" ? test::thick_tree(5, 8.0, 0.3)
+                                       : grow(path);
+  turn_about_root(t, g_azimuth);
   for (int stations : g_stations) {
     scanner::HarnessCase c = base;
     c.stations = stations;
@@ -221,6 +245,8 @@ int main(int argc, char** argv) {
           g_stations = {std::atoi(argv[++i])};
         } else if (arg == "--repeat" && i + 1 < argc) {
           g_repeat = std::atoi(argv[++i]);
+        } else if (arg == "--azimuth" && i + 1 < argc) {
+          g_azimuth = std::atof(argv[++i]);
         } else if (arg == "--dump" && i + 1 < argc) {
           g_dump = argv[++i];
         } else if (arg == "--leaves") {

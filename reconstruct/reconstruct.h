@@ -35,6 +35,9 @@ struct ReconstructOptions {
   double voxel_height_floor = 1.0 / 1000;
   int neighbours = 10;  // k of the k-nearest-neighbour graph (4.1)
   double max_gap = 0;   // largest gap bridged between graph components; auto: 8% of height
+  // Reach of a hidden limb (a component at least 10 voxels across, bridged once nothing else can
+  // be) as a multiple of max_gap; 1 or less turns the longer reach off.
+  double hidden_limb_reach = 3;
   // Thickness-adaptive projection onto branch axes before the Dijkstra forest: the ball around
   // each cell of grids of 2, 4, 8, ... voxels (this many levels; 0 = off) grows level by level
   // until its samples are linear (lambda_1 >= axis_linearity * lambda_2); the vertex moves onto

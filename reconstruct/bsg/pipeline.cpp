@@ -186,11 +186,12 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
   // Gaps are bridged between the projected samples: a gap is then measured between branch axes,
   // so the continuation of a fragment's own branch is nearer than the bark of a neighbouring one
   // (docs/reconstruction.md, The pipeline, step 3).
-  // A hidden limb (seen only beyond the stem it leaves) may reach twice as far once nothing else
-  // can be bridged, when it is at least as long as the shortest twig kept (10 voxels, below).
+  // A hidden limb (seen only beyond the stem it leaves) may reach farther (3 x by default) once
+  // nothing else can be bridged, when it is at least as long as the shortest twig kept (10
+  // voxels, below).
   BridgeParams bridge;
   bridge.max_gap = max_gap;
-  bridge.hidden_limb_gap = 2 * max_gap;
+  bridge.hidden_limb_gap = o.hidden_limb_reach * max_gap;
   bridge.hidden_limb_length = 10 * scale.voxel;
   res.counts.bridged_gaps = bridge_gaps(graph, roots, bridge);
   contract(graph, std::max(0, o.contraction_steps));
