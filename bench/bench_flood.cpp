@@ -54,8 +54,11 @@ void print_row(const char* method, const std::string& path, int stations, std::s
 
 // The accuracy harness of tests/support/harness.h, run for both methods on the same scan.
 void accuracy(const std::string& path) {
-  // "thick-small": the 8 m, 30 cm trunk tree of tests/reconstruct/reconstruct_fixtures.h.
-  const Skeleton truth = path == "thick-small" ? test::thick_tree(5, 8.0, 0.3) : grow(path);
+  // "thick-small" and "thick": the 8 m, 30 cm and the 14 m, 60 cm trunk trees of
+  // tests/reconstruct/reconstruct_fixtures.h.
+  const Skeleton truth = path == "thick-small" ? test::thick_tree(5, 8.0, 0.3)
+                         : path == "thick"     ? test::thick_tree(11, 14.0, 0.6)
+                                               : grow(path);
   for (int stations : {1, 3}) {
     scanner::HarnessCase hc;
     hc.stations = stations;

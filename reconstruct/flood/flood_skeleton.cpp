@@ -2,6 +2,7 @@
 // tree by flooding (Alg. 3), direction splitting and line fitting (Alg. 4), radii (Alg. 5).
 #include "reconstruct/flood/flood_skeleton.h"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -339,10 +340,12 @@ class Grower {
 // Scans have gaps (occlusion, thin twigs below the sampling density) that no flood crosses. Each
 // group of voxels no flood reached joins the tree node nearest to it, when that node is within
 // `max_gap` (plus its radius): the group is flooded from its voxel nearest to the node, as a side
-// branch of it. Returns how many groups were joined; growth then resumes.
+// branch of it. A group whose points span at least `long_group` (bounding-box diagonal) may join
+// from up to `long_gap` instead (hidden limbs; the caller passes 0 but in the round after no group
+// could join). Returns how many groups were joined; growth then resumes.
 std::size_t bridge_gaps(const VoxelGrid& grid, const std::vector<Vec3>& pts, const Grower& grower,
-                        const std::vector<Skeleton>& trees, double max_gap,
-                        std::deque<Pending>& queue) {
+                        const std::vector<Skeleton>& trees, double max_gap, double long_gap,
+                        double long_group, std::deque<Pending>& queue) {
   std::vector<Eigen::Vector3d> node_pos;
   std::vector<std::pair<std::uint32_t, std::uint32_t>> node_id;  // (tree, node)
   for (std::uint32_t k = 0; k < trees.size(); ++k) {
@@ -360,12 +363,14 @@ std::size_t bridge_gaps(const VoxelGrid& grid, const std::vector<Vec3>& pts, con
     // One 26-connected group of unreached voxels; remember its voxel nearest to a node.
     double best = 1e300;
     std::uint32_t best_voxel = kNoVoxel, best_node = 0;
+    Eigen::AlignedBox3d box;
     std::vector<std::uint32_t> stack{start};
     seen[start] = 1;
     while (!stack.empty()) {
       const std::uint32_t v = stack.back();
       stack.pop_back();
       double d2 = 0;
+      box.extend(to_eigen(pts[*grid.begin(v)]));
       const std::uint32_t n = nodes.nearest(to_eigen(pts[*grid.begin(v)]), &d2);
       if (d2 < best) best = d2, best_voxel = v, best_node = n;
       for (int dz = -1; dz <= 1; ++dz) {
@@ -380,7 +385,9 @@ std::size_t bridge_gaps(const VoxelGrid& grid, const std::vector<Vec3>& pts, con
       }
     }
     const auto [tree, node] = node_id[best_node];
-    if (std::sqrt(best) > max_gap + trees[tree].nodes[node].radius) continue;
+    const double reach =
+        long_gap > max_gap && box.diagonal().norm() >= long_group ? long_gap : max_gap;
+    if (std::sqrt(best) > reach + trees[tree].nodes[node].radius) continue;
     queue.push_back({tree, node, {best_voxel}, true});
     ++joined;
   }
@@ -448,8 +455,9 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
   // Alg. 2: voxelization. The edge follows the dimension d, but never below two point spacings,
   // so that the flood can cross the gaps between the samples of one branch.
   t = Clock::now();
+  const double spacing = median_spacing(epts, keep);
   double edge = o.voxel_size;
-  if (!(edge > 0)) edge = std::max(extent / o.dimension, 2.0 * median_spacing(epts, keep));
+  if (!(edge > 0)) edge = std::max(extent / o.dimension, 2.0 * spacing);
   if (!(edge > 0)) edge = extent / o.dimension;
   res.voxel_size = edge;
   const VoxelGrid grid(pts, keep, edge);
@@ -481,14 +489,25 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
     queue.push_back({std::uint32_t(trees.size() - 1), 0, {v}});
   }
   const double max_gap = o.max_gap > 0 ? o.max_gap : std::max(0.08 * height, 3 * edge);
+  // Hidden limbs (FloodOptions::hidden_limb_reach) are tried once no other group can join; after
+  // they have grown, the usual gaps first again.
+  const double long_group = 10 * spacing;
+  bool hidden = false;
   for (;;) {
     while (!queue.empty()) {
       Pending p = std::move(queue.front());
       queue.pop_front();
       grower.grow(std::move(p), trees, queue);
     }
-    const std::size_t bridged = bridge_gaps(grid, pts, grower, trees, max_gap, queue);
-    if (bridged == 0) break;
+    const std::size_t bridged =
+        bridge_gaps(grid, pts, grower, trees, max_gap, hidden ? o.hidden_limb_reach * max_gap : 0.0,
+                    long_group, queue);
+    if (bridged == 0) {
+      if (hidden || !(o.hidden_limb_reach > 1)) break;
+      hidden = true;
+      continue;
+    }
+    hidden = false;
     res.counts.bridged_gaps += bridged;
   }
   res.timings.forest = seconds_since(t);

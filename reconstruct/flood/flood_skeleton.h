@@ -48,6 +48,11 @@ struct FloodOptions {
   // Groups of voxels no flood reached (scan gaps) join the nearest node within this distance as
   // side branches; 0: 8% of the cloud's height, at least 3 voxels (as the BSG method).
   double max_gap = 0;
+  // A group at least 10 point spacings across may join from up to this many times max_gap, in a
+  // round after no other group could join: a limb that leaves its stem on the side away from the
+  // scanner is seen only from where it clears the stem (as ReconstructOptions::hidden_limb_reach;
+  // 1 or less: off).
+  double hidden_limb_reach = 3;
   // Centre lines: nodes moved onto circles fitted to their cross-sections, radii from the fits
   // (reconstruct/bsg/centre_line.h; docs/reconstruction.md).
   bool centre_lines = true;
