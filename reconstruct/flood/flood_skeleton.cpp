@@ -491,7 +491,7 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
   const double max_gap = o.max_gap > 0 ? o.max_gap : std::max(0.08 * height, 3 * edge);
   // Hidden limbs (FloodOptions::hidden_limb_reach) are tried once no other group can join; after
   // they have grown, the usual gaps first again.
-  const double long_group = 10 * spacing;
+  const double long_group = 10 * (spacing > 0 ? spacing : 0.5 * edge);
   bool hidden = false;
   for (;;) {
     while (!queue.empty()) {
