@@ -51,13 +51,34 @@ class Emitter {
     if (find_named_constant(r.name, v)) return push_const(v);
     throw CompileError("unknown name '" + r.name + "'", span);
   }
+  // The value of `e` when it is a constant by itself: a literal, a named constant (not shadowed
+  // by a parameter), or one of those under unary + and -.
+  bool constant_value(const ast::Expr& e, double& v) const {
+    if (const auto* n = std::get_if<ast::NumberLit>(&e.node)) return v = n->value, true;
+    if (const auto* u = std::get_if<ast::Unary>(&e.node)) {
+      if (u->op == ast::UnaryOp::Not || !constant_value(*u->operand, v)) return false;
+      if (u->op == ast::UnaryOp::Neg) v = -v;
+      return true;
+    }
+    const auto* r = std::get_if<ast::NameRef>(&e.node);
+    if (!r) return false;
+    for (const auto& [name, slot] : scope_.params) {
+      if (name == r->name) return false;
+    }
+    if (scope_.constants) {
+      for (const ir::Constant& c : *scope_.constants) {
+        if (c.name == r->name) return v = c.value, true;
+      }
+    }
+    return find_named_constant(r->name, v);
+  }
   void node(const ast::Unary& u, SourceSpan) {
-    // A negative literal is one constant, as a negative named constant is: `l * -30` and
-    // `l * a2` with `const a2 = -30` compile to the same code (the decompiler prints constants
-    // as literals, so a .rmb decompiles and compiles back to the code it holds).
-    if (const auto* n = std::get_if<ast::NumberLit>(&u.operand->node);
-        n && u.op == ast::UnaryOp::Neg) {
-      return push_const(-n->value);
+    // A negated constant is one constant, as a negative named constant is: `l * -30`, `l * -pi`
+    // and `l * a2` with `const a2 = -30` compile to a constant each (the decompiler prints
+    // constants as literals, `-3.14...` for -pi, so a .rmb decompiles and compiles back to the
+    // code it holds).
+    if (double v = 0; u.op == ast::UnaryOp::Neg && constant_value(*u.operand, v)) {
+      return push_const(-v);
     }
     expr(*u.operand);
     if (u.op == ast::UnaryOp::Neg) emit(ir::Op::Neg, 0, 0);

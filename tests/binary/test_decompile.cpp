@@ -113,6 +113,33 @@ TEST_CASE("binary: expressions come back as infix with the fewest parentheses", 
   CHECK(test::derive_steps(again, 4) == test::derive_steps(g, 4));
 }
 
+// The decompiler prints every constant as a literal, `-3.141592653589793` for `-pi`, so a
+// negated constant must compile as the negative literal does: one constant (fuzz_roundtrip_rmb
+// found `l + -pi` and `l * 0 + -+0.5` compiling to a constant and a negation).
+TEST_CASE("binary: a negated constant compiles as its negative literal does", "[binary]") {
+  auto codes = [](const std::string& args) {
+    SourceManager sm;
+    DiagnosticSink diags;
+    const ir::Grammar g = lower_text("neg.ramus",
+                                     "const k = 3;\nlsystem t {\n  derive 1;\n  axiom A(1);\n"
+                                     "  A(x) -> B(" +
+                                         args + ");\n  B(a, b, c, d) -> ;\n}\n",
+                                     GrowOptions{}, sm, diags);
+    std::string all;
+    for (std::size_t c = 0; c < g.codes.size(); ++c) all += ir::dump_code(g, ir::CodeId(c));
+    return std::make_pair(all, g);
+  };
+  const auto [named, g] = codes("x + -pi, x * -+0.5, x - -(+2), x + -k");
+  CHECK(named == codes("x + -3.141592653589793, x * -0.5, x - -2, x + -3").first);
+  const std::string text = decompile(decode_rmb(encode_rmb(g)));
+  INFO(text);
+  const ir::Grammar again = relower(text).g;
+  REQUIRE(again.codes.size() == g.codes.size());
+  for (std::size_t c = 0; c < g.codes.size(); ++c) {
+    CHECK(ir::dump_code(again, ir::CodeId(c)) == ir::dump_code(g, ir::CodeId(c)));
+  }
+}
+
 TEST_CASE("binary: formal names fall back to p0, p1 without production texts", "[binary]") {
   ir::Grammar g = test::lower_example("examples/abop/param_p42.ramus");
   for (ir::Production& p : g.productions) p.text.clear();
