@@ -1,6 +1,8 @@
 #include "compiler/expr_compile.h"
 
 #include <algorithm>
+#include <optional>
+#include <string>
 
 #include "compiler/expr_vm.h"
 #include "grammar/builtins.h"
@@ -34,21 +36,30 @@ class Emitter {
 
   void node(const ast::NumberLit& n, SourceSpan) { push_const(n.value); }
   void node(const ast::BoolLit& b, SourceSpan) { push_const(b.value ? 1.0 : 0.0); }
-  void node(const ast::NameRef& r, SourceSpan span) {
-    for (const auto& [name, slot] : scope_.params) {
-      if (name == r.name) {
-        loads = true;
-        emit(ir::Op::Load, slot, +1);
-        return;
-      }
+  // A name is a parameter (its slot) or else a constant: the scope's, then a named one (pi, ...).
+  std::optional<std::uint32_t> param_slot(const std::string& name) const {
+    for (const auto& [n, slot] : scope_.params) {
+      if (n == name) return slot;
     }
+    return std::nullopt;
+  }
+  bool constant_named(const std::string& name, double& v) const {
+    if (param_slot(name)) return false;
     if (scope_.constants) {
       for (const ir::Constant& c : *scope_.constants) {
-        if (c.name == r.name) return push_const(c.value);
+        if (c.name == name) return v = c.value, true;
       }
     }
+    return find_named_constant(name, v);
+  }
+  void node(const ast::NameRef& r, SourceSpan span) {
+    if (const std::optional<std::uint32_t> slot = param_slot(r.name)) {
+      loads = true;
+      emit(ir::Op::Load, *slot, +1);
+      return;
+    }
     double v = 0;
-    if (find_named_constant(r.name, v)) return push_const(v);
+    if (constant_named(r.name, v)) return push_const(v);
     throw CompileError("unknown name '" + r.name + "'", span);
   }
   // The value of `e` when it is a constant by itself: a literal, a named constant (not shadowed
@@ -61,16 +72,7 @@ class Emitter {
       return true;
     }
     const auto* r = std::get_if<ast::NameRef>(&e.node);
-    if (!r) return false;
-    for (const auto& [name, slot] : scope_.params) {
-      if (name == r->name) return false;
-    }
-    if (scope_.constants) {
-      for (const ir::Constant& c : *scope_.constants) {
-        if (c.name == r->name) return v = c.value, true;
-      }
-    }
-    return find_named_constant(r->name, v);
+    return r && constant_named(r->name, v);
   }
   void node(const ast::Unary& u, SourceSpan) {
     // A negated constant is one constant, as a negative named constant is: `l * -30`, `l * -pi`

@@ -111,18 +111,22 @@ std::size_t varint_length(std::uint64_t v) {
 // ((zigzag(k) + 1) << 3) | 7, preferred in that order on equal length; nullopt: neither has a
 // code (7 and the f64 of the quantized value follow). Quantizing the value it stores gives the
 // same choice, so quantizing a quantized file changes nothing.
+std::optional<double> Writer::quantum_multiple(double v) const {
+  if (!std::isfinite(v)) return std::nullopt;
+  // + 0.0: a value that rounds to -0 (-0 itself, or a negative one under half a quantum) is
+  // stored as the multiple 0, which reads back as +0; so the value stored must be +0 too, or two
+  // pool entries (+0 and -0) would be one after decoding and re-encoding.
+  const double k = std::nearbyint(std::ldexp(v, -exponent_)) + 0.0;
+  if (std::fabs(k) > double(kMaxQuantumMultiple)) return std::nullopt;
+  return k;
+}
+
 Writer::QuantizedChoice Writer::choose_quantized(double v) const {
   double q = v;
   std::optional<std::uint64_t> tagged;
-  if (std::isfinite(v)) {
-    // + 0.0: a value that rounds to -0 (-0 itself, or a negative one under half a quantum) is
-    // stored as the multiple 0, which reads back as +0; so the value this choice stores must be
-    // +0 too, or two pool entries (+0 and -0) would be one after decoding and re-encoding.
-    const double k = std::nearbyint(std::ldexp(v, -exponent_)) + 0.0;
-    if (std::fabs(k) <= double(kMaxQuantumMultiple)) {
-      q = std::ldexp(k, exponent_);
-      tagged = ((zigzag(std::int64_t(k)) + 1) << 3) | 7;
-    }
+  if (const std::optional<double> k = quantum_multiple(v)) {
+    q = std::ldexp(*k, exponent_);
+    tagged = ((zigzag(std::int64_t(*k)) + 1) << 3) | 7;
   }
   QuantizedChoice best{std::nullopt, q};
   auto consider = [&](std::optional<std::uint64_t> code, double value) {
@@ -151,9 +155,8 @@ void Writer::real(double v) {
     return;
   }
   if (!decimal_) {  // version 1, quantized: the multiple, or 1 and the f64
-    const double k = std::isfinite(v) ? std::nearbyint(std::ldexp(v, -exponent_)) : 0;
-    if (std::isfinite(v) && std::fabs(k) <= double(kMaxQuantumMultiple)) {
-      varint(zigzag(std::int64_t(k)) << 1);
+    if (const std::optional<double> k = quantum_multiple(v)) {
+      varint(zigzag(std::int64_t(*k)) << 1);
     } else {
       varint(1);
       f64(v);
@@ -172,8 +175,8 @@ void Writer::real(double v) {
 double Writer::stored_real(double v) const {
   if (!quantized_ || !std::isfinite(v)) return v;
   if (decimal_) return choose_quantized(v).value;
-  const double k = std::nearbyint(std::ldexp(v, -exponent_)) + 0.0;  // as choose_quantized
-  return std::fabs(k) <= double(kMaxQuantumMultiple) ? std::ldexp(k, exponent_) : v;
+  const std::optional<double> k = quantum_multiple(v);
+  return k ? std::ldexp(*k, exponent_) : v;
 }
 
 void Writer::f64(double v) {

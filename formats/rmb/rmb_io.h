@@ -69,6 +69,9 @@ class Writer {
     double value;
   };
   QuantizedChoice choose_quantized(double v) const;
+  // The multiple of the quantum that stores v (+0 for what rounds to -0); nullopt when v is not
+  // finite or too far from 0 for the multiple's range.
+  std::optional<double> quantum_multiple(double v) const;
 
   std::string out_;
   bool quantized_ = false, decimal_ = false;

@@ -385,9 +385,13 @@ std::size_t drop_branches_inside_stems(Bsg& b, const std::vector<std::uint8_t>& 
       if (fork == kNone || children[fork] < 2) continue;  // the trunk's own top
       for (std::uint32_t v : chain) in_chain[v] = 1;
       std::size_t outside = 0;
-      for (std::uint32_t v : chain) outside += !inside_other(b.pos[v]);
-      const bool inside =
-          inside_other(b.pos[tip]) && double(outside) <= kMaxOutsideShare * double(chain.size());
+      bool tip_inside = false;
+      for (std::uint32_t v : chain) {
+        const bool in = inside_other(b.pos[v]);
+        outside += !in;
+        if (v == tip) tip_inside = in;
+      }
+      const bool inside = tip_inside && double(outside) <= kMaxOutsideShare * double(chain.size());
       for (std::uint32_t v : chain) in_chain[v] = 0;
       if (!inside) continue;
       for (std::uint32_t v : chain) alive[v] = 0;

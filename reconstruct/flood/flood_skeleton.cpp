@@ -455,9 +455,8 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
   // Alg. 2: voxelization. The edge follows the dimension d, but never below two point spacings,
   // so that the flood can cross the gaps between the samples of one branch.
   t = Clock::now();
-  const double spacing = median_spacing(epts, keep);
   double edge = o.voxel_size;
-  if (!(edge > 0)) edge = std::max(extent / o.dimension, 2.0 * spacing);
+  if (!(edge > 0)) edge = std::max(extent / o.dimension, 2.0 * median_spacing(epts, keep));
   if (!(edge > 0)) edge = extent / o.dimension;
   res.voxel_size = edge;
   const VoxelGrid grid(pts, keep, edge);
@@ -490,8 +489,9 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
   }
   const double max_gap = o.max_gap > 0 ? o.max_gap : std::max(0.08 * height, 3 * edge);
   // Hidden limbs (FloodOptions::hidden_limb_reach) are tried once no other group can join; after
-  // they have grown, the usual gaps first again.
-  const double long_group = 10 * (spacing > 0 ? spacing : 0.5 * edge);
+  // they have grown, the usual gaps first again. Their least size, 10 point spacings, is measured
+  // only when they are tried (most scans leave no group unreached).
+  double long_group = 0;
   bool hidden = false;
   for (;;) {
     while (!queue.empty()) {
@@ -504,6 +504,10 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
                     long_group, queue);
     if (bridged == 0) {
       if (hidden || !(o.hidden_limb_reach > 1)) break;
+      if (!(long_group > 0)) {
+        const double spacing = median_spacing(epts, keep);
+        long_group = 10 * (spacing > 0 ? spacing : 0.5 * edge);
+      }
       hidden = true;
       continue;
     }
