@@ -30,7 +30,7 @@ summarise() {
 echo "| scan | method | reconstruction IoU | grown IoU (median) | pieces (most) | axis-locked (most) | height ratio (median) |"
 echo "|---|---|---:|---:|---:|---:|---:|"
 for scan in adtree_tree1.xyz adtree_ahn3_delft.xyz rtwig_cloud.txt plantscan3d_A3B4.asc \
-  pytlidar_tree_1.las; do
+  pytlidar_tree_1.las treels_spruce.laz; do
   name=${scan%.*}
   "$ramus" -q infer "$data/$scan" -o "$work/$name.skeleton.ramus" --method skeleton
   "$ramus" -q infer "$data/$scan" -o "$work/$name.wavelet.ramus" --method wavelet

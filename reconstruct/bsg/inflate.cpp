@@ -264,30 +264,6 @@ void assign_radii(Bsg& bsg, double d_avg, double exponent, double root_radius) {
   for (double& r : bsg.radius) r *= s;
 }
 
-double trunk_radius(const std::vector<Eigen::Vector3d>& samples, const Eigen::Vector3d& base,
-                    double slab, double max_width) {
-  // Minimizes sum (x^2 + y^2 + D x + E y + F)^2: linear in (D, E, F).
-  Eigen::Matrix3d m = Eigen::Matrix3d::Zero();
-  Eigen::Vector3d rhs = Eigen::Vector3d::Zero();
-  int n = 0;
-  for (const Eigen::Vector3d& p : samples) {
-    const double dx = p.x() - base.x(), dy = p.y() - base.y();
-    if (p.z() < base.z() || p.z() > base.z() + slab ||
-        dx * dx + dy * dy > 0.25 * max_width * max_width) {
-      continue;
-    }
-    const Eigen::Vector3d row(dx, dy, 1.0);
-    m += row * row.transpose();
-    rhs -= row * (dx * dx + dy * dy);
-    ++n;
-  }
-  if (n < 6) return 0.0;
-  const Eigen::Vector3d sol = m.ldlt().solve(rhs);
-  const double r2 = 0.25 * (sol.x() * sol.x() + sol.y() * sol.y()) - sol.z();
-  const double r = r2 > 0 ? std::sqrt(r2) : 0.0;
-  return std::isfinite(r) && r < 0.5 * max_width ? r : 0.0;
-}
-
 std::size_t collapse_overlaps(Bsg& bsg, double overlap, double min_radius, double tolerance) {
   if (bsg.size() < 2) return 0;
   Editable e{bsg, children_of(bsg.parent), std::vector<std::uint8_t>(bsg.size(), 1)};

@@ -20,12 +20,6 @@ struct InflateParams {
   double tolerance = 0;    // shape tolerance of degree-2 collapses (at least the radius)
 };
 
-// The trunk radius at the base: an algebraic (Kasa) circle fit to the horizontal positions of
-// the samples in [base.z, base.z + slab] within max_width / 2 of the base. Works on the arc a
-// one-sided scan sees. Returns 0 when there are too few samples or the fit is implausible.
-double trunk_radius(const std::vector<Eigen::Vector3d>& samples, const Eigen::Vector3d& base,
-                    double slab, double max_width);
-
 // Mean distance between the samples (weighted by their point counts) and the BSG's edges.
 double mean_sample_distance(const Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
                             const std::vector<std::uint32_t>& counts, double edge_sample);

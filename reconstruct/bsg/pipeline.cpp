@@ -18,6 +18,7 @@
 #include "reconstruct/bsg/kdtree.h"
 #include "reconstruct/bsg/output.h"
 #include "reconstruct/bsg/refine.h"
+#include "reconstruct/bsg/trunk_radius.h"
 #include "reconstruct/reconstruct.h"
 #include "reconstruct/wood/reconstruct_wood.h"
 
@@ -253,10 +254,11 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
   tbb::parallel_for(std::size_t(0), roots.size(), [&](std::size_t k) {
     if (trees[k].size() < 2) return;
     InflateParams tp = ip;
-    // The circle is fitted in the lower half of the base slab, within the trunk's footprint, so
-    // that low branches (a conifer's lowest whorl) do not widen it.
-    tp.root_radius =
-        trunk_radius(samples[k], graph.pos[roots[k]], 0.5 * bp.slab, 2 * root_reach[k]);
+    // The circles are fitted in the lower half of the base slab, within the trunk's footprint
+    // (trunk_radius.h: robust fits in shrinking windows, so that a conifer's skirt of branches
+    // and the ground around the base do not widen them).
+    tp.root_radius = trunk_radius(samples[k], graph.pos[roots[k]], 0.5 * bp.slab, 2 * root_reach[k],
+                                  scale.voxel);
     inflate(trees[k], samples[k], counts[k], tp);
     if (o.centre_lines) centre_tree(trees[k], samples[k], counts[k], scale.voxel);
     LeafParams lp{o.leaves,     o.min_leaves,

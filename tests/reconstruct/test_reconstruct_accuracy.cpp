@@ -127,13 +127,16 @@ TEST_CASE("reconstruct accuracy: bundled weeping grammar, three stations, defaul
 
 // One station sees one side of the crown; the occluded half is missing, so the targets are not
 // met. Measured with the defaults (precision within 2 x radius, length, precision within 1% of
-// the height): weeping 0.748 / 0.860 / 0.979. Regression guards.
+// the height): weeping 0.665 / 0.877 / 0.970. Regression guards. (0.739 while the trunk radius
+// came from one algebraic circle: 0.185 m on the half-ring this scan sees, truth 0.275 m; the
+// robust fits measure 0.271 m, and at that scale the pipe model's radii of the whips are 1.3-1.6 x
+// theirs, which costs the inflation's clustering: docs/reconstruction.md, Deviations.)
 TEST_CASE("reconstruct accuracy: bundled weeping grammar, one station, defaults", "[accuracy]") {
   const scanner::HarnessResult r = scan_grammar("weeping.ramus", 1);
   const SkeletonComparison& a = r.at_radius;
   INFO("points " << r.points << " precision " << a.precision << " length " << a.length_ratio);
   REQUIRE(r.trees == 1);
-  CHECK(a.precision >= 0.7);
+  CHECK(a.precision >= 0.64);
   CHECK(a.length_ratio > 0.75);
   CHECK(a.length_ratio < 1.2);
   CHECK(a.precision_distance >= 0.9);
