@@ -31,6 +31,21 @@ void gather_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, const Eigen
   }
 }
 
+void gather_cylinder(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double reach, double half,
+                     const PointIndex& index, const std::vector<Eigen::Vector3d>& samples,
+                     const std::vector<double>& weight, std::vector<std::uint32_t>& near,
+                     std::vector<Eigen::Vector3d>& pts, std::vector<double>& w) {
+  near.clear(), pts.clear(), w.clear();
+  index.within(x, std::sqrt(reach * reach + half * half), near);
+  for (std::uint32_t i : near) {
+    const Eigen::Vector3d q = samples[i] - x;
+    const double t = q.dot(d);
+    if (std::abs(t) > half || (q - t * d).squaredNorm() > reach * reach) continue;
+    pts.push_back(samples[i]);
+    w.push_back(weight.empty() ? 1.0 : weight[i]);
+  }
+}
+
 void thin_slab(std::vector<Eigen::Vector2d>& pts, std::vector<double>& w, int max_points) {
   if (max_points <= 0 || int(pts.size()) <= max_points) return;
   const std::size_t stride = (pts.size() + max_points - 1) / max_points;

@@ -98,6 +98,15 @@ void gather_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, const Eigen
                  std::vector<std::uint32_t>& near, std::vector<Eigen::Vector2d>& pts,
                  std::vector<double>& w);
 
+// The samples within `half` of x along the unit direction d and within `reach` of the line
+// through x along d (the points around a piece of axis), as they are, with their weights (1 each
+// when `weight` is empty), in the order the index gives them. `near` is scratch. Shared by the
+// cylinders along chains (chain_cylinders.h) and the trunk tracking (stem_tracking.h).
+void gather_cylinder(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double reach, double half,
+                     const PointIndex& index, const std::vector<Eigen::Vector3d>& samples,
+                     const std::vector<double>& weight, std::vector<std::uint32_t>& near,
+                     std::vector<Eigen::Vector3d>& pts, std::vector<double>& w);
+
 // Thins a slab's points and their weights evenly (every k-th, k the smallest stride that keeps
 // at most `max_points`); a slab of thousands of points fits no better than of a few hundred.
 void thin_slab(std::vector<Eigen::Vector2d>& pts, std::vector<double>& w, int max_points);

@@ -181,16 +181,7 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
     for (int attempt = 0; attempt < 6; ++attempt) {
       const double reach = std::max(2.5 * r0, 5 * p.spacing);
       const double span = std::max({half_length, r0, 3 * p.spacing});
-      near.clear();
-      index.within(centre, std::sqrt(reach * reach + span * span), near);
-      pts.clear(), w.clear();
-      for (std::uint32_t i : near) {
-        const Eigen::Vector3d q = samples[i] - centre;
-        const double t = q.dot(d0);
-        if (std::abs(t) > span || (q - t * d0).squaredNorm() > reach * reach) continue;
-        pts.push_back(samples[i]);
-        w.push_back(weight.empty() ? 1.0 : weight[i]);
-      }
+      gather_cylinder(centre, d0, reach, span, index, samples, weight, near, pts, w);
       if (pts.size() < 12) return;
       const std::size_t cap = 4 * std::size_t(p.max_slab_points) / 3;
       if (pts.size() > cap) {

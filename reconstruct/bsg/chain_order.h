@@ -6,7 +6,7 @@
 // back straightened the stems but lost the nodes' fits (a 20-40 cm class from 0.05 to 0.13 r);
 // here the nodes stay and only their order changes: Livny 4.2 takes branches to be smooth, and
 // a smooth chain visits the points of its axis in the order of their position along it.
-// docs/reconstruction.md, "Centre lines", step 9.
+// docs/reconstruction.md, "Centre lines", step 10.
 #pragma once
 
 #include <cstddef>

@@ -18,6 +18,7 @@
 #include "reconstruct/bsg/kdtree.h"
 #include "reconstruct/bsg/output.h"
 #include "reconstruct/bsg/refine.h"
+#include "reconstruct/bsg/stem_tracking.h"
 #include "reconstruct/bsg/trunk_radius.h"
 #include "reconstruct/reconstruct.h"
 #include "reconstruct/wood/reconstruct_wood.h"
@@ -110,6 +111,13 @@ void centre_tree(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
   smooth_fitted_radii(b.parent, fit, b.radius);
   if (fit.fitted_count == 0) return;
   std::vector<std::uint8_t> fitted = fit.fitted;
+  {
+    // The trunk followed up the wood from its fitted base; what it passes hangs from it.
+    const PointIndex index(samples);
+    std::uint32_t start = kNone;
+    const StemTrack track = track_trunk(b, fitted, index, samples, weight, voxel, start);
+    rehang_on_track(b, fitted, track, start, voxel);
+  }
   place_forks(b, fitted, voxel);
   drop_branches_inside_stems(b, fitted, voxel);
   order_chains_along_axes(b, cp.min_hint_spacings * voxel);

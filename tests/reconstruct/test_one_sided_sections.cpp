@@ -6,7 +6,6 @@
 #include <catch2/catch.hpp>
 #include <cmath>
 
-#include "compiler/grow.h"
 #include "core/rng.h"
 #include "reconstruct/bsg/bsg.h"
 #include "reconstruct/bsg/kdtree.h"
@@ -103,14 +102,10 @@ TEST_CASE("one-sided sections: a limb's bark nodes move to its axis, a wall's st
 // Centre lines). The bounds lie between the two.
 TEST_CASE("one-sided sections: thick_oak from one station, 5-20 cm limbs nearer their axes",
           "[accuracy]") {
-  SourceManager sources;
-  DiagnosticSink diags;
-  const Skeleton truth =
-      grow_file(RAMUS_SOURCE_DIR "/examples/trees/thick_oak.ramus", {}, sources, diags);
-  REQUIRE(truth.size() > 10);
   scanner::HarnessCase c;
   c.stations = 1;
-  const scanner::HarnessResult r = scanner::run_harness(truth, c);
+  const scanner::HarnessResult r =
+      scanner::run_harness_on_grammar(RAMUS_SOURCE_DIR "/examples/trees/thick_oak.ramus", c);
   REQUIRE(r.trees == 1);
   const SkeletonComparison& a = r.at_radius;
   CHECK(a.precision >= 0.95);

@@ -5,7 +5,6 @@
 #include <catch2/catch.hpp>
 #include <string>
 
-#include "compiler/grow.h"
 #include "tests/reconstruct/reconstruct_fixtures.h"
 #include "tests/support/harness.h"
 
@@ -88,14 +87,10 @@ namespace {
 
 scanner::HarnessResult scan_grammar(const char* grammar, int stations,
                                     const ReconstructOptions& o = {}) {
-  SourceManager sources;
-  DiagnosticSink diags;
-  const Skeleton truth =
-      grow_file(std::string(RAMUS_SOURCE_DIR "/examples/trees/") + grammar, {}, sources, diags);
-  REQUIRE(truth.size() > 10);
   scanner::HarnessCase c;
   c.stations = stations;
-  return scanner::run_harness(truth, c, o);
+  return scanner::run_harness_on_grammar(std::string(RAMUS_SOURCE_DIR "/examples/trees/") + grammar,
+                                         c, o);
 }
 
 void check_targets(const scanner::HarnessResult& r, double min_recall_distance) {

@@ -2,6 +2,9 @@
 
 #include <chrono>
 #include <cmath>
+#include <stdexcept>
+
+#include "compiler/grow.h"
 
 namespace ramus::scanner {
 
@@ -22,6 +25,15 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
                           const ReconstructOptions& options) {
   return run_harness(truth, c,
                      [&](const PointCloud& cloud) { return reconstruct(cloud, options); });
+}
+
+HarnessResult run_harness_on_grammar(const std::string& path, const HarnessCase& c,
+                                     const ReconstructOptions& options) {
+  SourceManager sources;
+  DiagnosticSink diags;
+  const Skeleton truth = grow_file(path, {}, sources, diags);
+  if (truth.size() < 2) throw std::runtime_error(path + " grows no tree");
+  return run_harness(truth, c, options);
 }
 
 HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,

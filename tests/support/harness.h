@@ -9,8 +9,8 @@
 
 #include "backends/scanner/scanner.h"
 #include "core/skeleton.h"
-#include "reconstruct/reconstruct.h"
 #include "reconstruct/bsg/compare.h"
+#include "reconstruct/reconstruct.h"
 
 namespace ramus::scanner {
 
@@ -44,5 +44,11 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
 // The same with any reconstruction method (the BSG pipeline above, or the flood fill).
 using Reconstructor = std::function<ReconstructResult(const PointCloud&)>;
 HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c, const Reconstructor& method);
+
+// The tree a grammar file grows (its own seed and derive count) through run_harness: the setup
+// of the accuracy tests on the bundled grammars. Throws std::runtime_error when the grammar grows
+// no tree.
+HarnessResult run_harness_on_grammar(const std::string& path, const HarnessCase& c,
+                                     const ReconstructOptions& options = {});
 
 }  // namespace ramus::scanner

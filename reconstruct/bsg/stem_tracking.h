@@ -1,0 +1,46 @@
+// The trunk followed up the wood with cylinders, and the skeleton hung from it. On a one-sided
+// scan of a conifer the BSG's shortest paths (Livny et al. 2010, 4.1) do not climb the trunk:
+// below each whorl its front is hidden by the whorl's drooping branches, so the path leaves the
+// trunk along a branch of the whorl below, crosses to a drooping branch of the whorl above and
+// walks it back in (a V), and the centre lines, which keep the topology, cannot bring such a chain
+// to the axis. TreeQSM grows a stem from its base segment by segment (Raumonen et al. 2013,
+// Remote Sens. 5(2), section 2.3: cylinders fitted to each segment, the next one searched
+// along the last one's axis); here the trunk is continued from its fitted base the same way,
+// through the samples and not along the BSG's chain, and then replaces the chain it passes.
+// docs/reconstruction.md, "Centre lines", step 7.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "reconstruct/bsg/bsg.h"
+#include "reconstruct/bsg/kdtree.h"
+
+namespace ramus::bsg {
+
+struct StemTrack {
+  std::vector<Eigen::Vector3d> axis;  // from the last node of the fitted base upwards
+  std::vector<double> radius;
+  std::vector<std::uint8_t> fitted;  // 1 where a cylinder was accepted, 0 where coasted
+};
+
+// The trunk's axis continued from the fitted run of the root's heaviest chain: cylinders of
+// max(2 r, 6 spacings) fitted ahead along the last axis, each accepted on the centre lines'
+// terms (arc, inliers, residual, axial fill) and as a continuation (radius 0.6-1.15 x the last,
+// axis within 15 degrees and half a radius of it); where none is accepted (a whorl, an occluded
+// stretch) the axis goes on straight for at most three pieces. Empty when the base run is
+// shorter than two radii or nothing beyond it was accepted. `start` receives the run's last node.
+StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
+                      const PointIndex& index, const std::vector<Eigen::Vector3d>& samples,
+                      const std::vector<double>& weight, double spacing, std::uint32_t& start);
+
+// Replaces what the track passes: the start node's descendants within 1.25 x the track's radius
+// (plus two spacings) of its axis go (the chain that wandered over the bark and out along the
+// whorls, the first nodes of every branch on the bark), the track's points become a chain of
+// nodes from `start`, and everything that hung from a removed node hangs from the track's nearest
+// node. Parents stay before children; `fitted` follows the nodes (track nodes take their piece's
+// flag). Returns the nodes removed.
+std::size_t rehang_on_track(Bsg& b, std::vector<std::uint8_t>& fitted, const StemTrack& track,
+                            std::uint32_t start, double spacing);
+
+}  // namespace ramus::bsg
