@@ -233,8 +233,8 @@ std::size_t rehang_on_track(Bsg& b, std::vector<std::uint8_t>& fitted, const Ste
   for (std::uint32_t v = 1; v < n; ++v) {
     if (absorbed[v]) continue;
     const std::uint32_t u = b.parent[v];
-    out.parent[local[v]] =
-        absorbed[u] ? track_node(distance_to_track(track, b.pos[v]).nearest) : local[u];
+    // A child of a removed node is itself below the start: its distance to the track is known.
+    out.parent[local[v]] = absorbed[u] ? track_node(where[v].nearest) : local[u];
   }
   // Parents before children again.
   std::vector<std::uint32_t> old_of;
