@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "reconstruct/bsg/centre_line.h"
+#include "reconstruct/bsg/circle_fit.h"
 #include "reconstruct/bsg/cylinder_fit.h"
 
 namespace ramus::bsg {
@@ -124,6 +125,7 @@ StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
   std::vector<double> recent{r};
   std::vector<std::uint32_t> near;
   std::vector<Eigen::Vector3d> pts;
+  std::vector<Eigen::Vector2d> section;
   std::vector<double> w;
   while (t.axis.size() < kMaxPieces && r >= 1.5 * spacing) {
     const double length = std::max(2 * r, 6 * spacing);
@@ -143,6 +145,25 @@ StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
              f.residual <= kMaxResidual * f.radius + noise && f.axial_fill >= kMinFill &&
              f.radius >= kMinRatio * r && f.radius <= kMaxRatio * r + spacing &&
              dir.dot(d) >= kMinCosine && shift <= 0.5 * r + spacing;
+      }
+    }
+    // A piece the free cylinder does not pass (it leans towards a whorl's branches, whose points
+    // it takes for bark) is fitted once more as a cross-section across the predicted axis, as
+    // the centre lines' continuation fits do (docs/reconstruction.md, Centre lines, step 5).
+    if (!ok && pts.size() >= kMinPoints) {
+      Eigen::Vector3d e1, e2;
+      perpendicular_frame(d, e1, e2);
+      section.clear();
+      for (const Eigen::Vector3d& q : pts)
+        section.emplace_back((q - centre).dot(e1), (q - centre).dot(e2));
+      const CircleFit c = fit_circle(section, w, noise);
+      if (c.valid && c.coverage >= kMinCoverage && c.inlier_fraction >= kMinInliers &&
+          c.residual <= kMaxResidual * c.radius + noise && c.radius >= kMinRatio * r &&
+          c.radius <= kMaxRatio * r + spacing && c.centre.norm() <= 0.5 * r + spacing) {
+        ok = true;
+        dir = d;
+        f.point = centre + c.centre.x() * e1 + c.centre.y() * e2;
+        f.radius = c.radius;
       }
     }
     if (ok) {

@@ -155,7 +155,7 @@ TEST_CASE("stem tracking: nothing without a fitted base", "[reconstruct]") {
 
 // The bundled conifer from one station (the accuracy harness): before the tracking the BSG's
 // trunk chain left the trunk at every whorl (median centre-line error over all samples 10-20 cm
-// 0.689 r, 20-40 cm 0.167 r); measured with it 0.108 and 0.036.
+// 0.689 r, 20-40 cm 0.167 r); measured with it 0.122 and 0.036.
 TEST_CASE("stem tracking: the bundled conifer's trunk from one station", "[accuracy]") {
   scanner::HarnessCase c;
   c.stations = 1;
