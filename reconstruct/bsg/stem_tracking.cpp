@@ -115,6 +115,7 @@ StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
   Eigen::Vector3d d = b.pos[s] - from;
   if (!(r > 0) || !(d.norm() >= 2 * r)) return t;
   d.normalize();
+  const Eigen::Vector3d base_direction = d;
 
   const double noise = 0.25 * spacing;
   t.axis.push_back(b.pos[s]);
@@ -198,6 +199,34 @@ StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
     t.axis.pop_back(), t.radius.pop_back(), t.fitted.pop_back();
   }
   if (t.axis.size() < 2) return StemTrack{};
+  start = s;
+  // Below a fitted base that starts above the root (a root flare, undergrowth and ground around
+  // the base, where the BSG's chain wanders), the trunk goes on straight down along the base's
+  // direction to the root's level, and the root moves onto it.
+  const double below = (b.pos[0] - b.pos[chain[first]]).dot(base_direction);
+  if (first > 0 && below < 0) {
+    StemTrack full;
+    const double r_base = b.radius[chain[first]];
+    const int pieces = std::max(1, int(std::ceil(-below / std::max(2 * r_base, 6 * spacing))));
+    for (int k = 0; k < pieces; ++k) {
+      full.axis.push_back(b.pos[chain[first]] +
+                          below * (1.0 - double(k) / pieces) * base_direction);
+      full.radius.push_back(r_base);
+      full.fitted.push_back(0);
+    }
+    for (std::size_t i = first; i + 1 < run; ++i) {
+      full.axis.push_back(b.pos[chain[i]]);
+      full.radius.push_back(b.radius[chain[i]]);
+      full.fitted.push_back(1);
+    }
+    for (std::size_t j = 0; j < t.axis.size(); ++j) {
+      full.axis.push_back(t.axis[j]);
+      full.radius.push_back(t.radius[j]);
+      full.fitted.push_back(t.fitted[j]);
+    }
+    t = std::move(full);
+    start = 0;
+  }
   // Each point's radius is the median of its own and its neighbours' (the start's is its fit's):
   // one piece through a whorl's branch bases measures a bulge the trunk does not have.
   const std::vector<double> measured = t.radius;
@@ -205,7 +234,6 @@ StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
     double a = measured[j - 1], c = measured[j], e = j + 1 < measured.size() ? measured[j + 1] : c;
     t.radius[j] = std::max(std::min(a, c), std::min(std::max(a, c), e));
   }
-  start = s;
   return t;
 }
 
@@ -238,6 +266,9 @@ std::size_t rehang_on_track(Bsg& b, std::vector<std::uint8_t>& fitted, const Ste
     append_node(out, b, v, kNone);
     fit.push_back(fitted[v]);
   }
+  // The start stands on the track's first point (the root, moved onto the trunk's axis when the
+  // track was continued down to it; elsewhere it is there already).
+  out.pos[local[start]] = track.axis[0];
   // Track point j (j >= 1) is node kept_count + j - 1; point 0 is the start.
   auto track_node = [&](std::size_t j) {
     return j == 0 ? local[start] : kept_count + std::uint32_t(j - 1);

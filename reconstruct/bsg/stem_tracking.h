@@ -19,17 +19,22 @@
 namespace ramus::bsg {
 
 struct StemTrack {
-  std::vector<Eigen::Vector3d> axis;  // from the last node of the fitted base upwards
+  std::vector<Eigen::Vector3d> axis;  // from the start node's position upwards
   std::vector<double> radius;
-  std::vector<std::uint8_t> fitted;  // 1 where a cylinder was accepted, 0 where coasted
+  std::vector<std::uint8_t> fitted;  // 1 where a fit (or a fitted node) placed it, 0 where extended
 };
 
-// The trunk's axis continued from the fitted run of the root's heaviest chain: cylinders of
-// max(2 r, 6 spacings) fitted ahead along the last axis, each accepted on the centre lines'
-// terms (arc, inliers, residual, axial fill) and as a continuation (radius 0.6-1.15 x the last,
-// axis within 15 degrees and half a radius of it); where none is accepted (a whorl, an occluded
-// stretch) the axis goes on straight for at most three pieces. Empty when the base run is
-// shorter than two radii or nothing beyond it was accepted. `start` receives the run's last node.
+// The trunk's axis continued from the first run of fitted nodes on the root's heaviest chain
+// (starting within its first quarter): cylinders of max(2 r, 6 spacings) fitted ahead along the
+// chord of the accepted axis, each accepted on the centre lines' terms (arc, inliers, residual,
+// axial fill) and as a continuation (radius 0.6-1.15 x the median of the last three, axis within
+// 15 degrees and half a radius of the prediction), else a circle across the predicted axis on
+// the same terms; where neither is accepted (a whorl, an occluded stretch) the axis goes on
+// straight for at most three pieces. When the run starts above the root (ground clutter, a root
+// flare), the track also runs straight down from it along the run's direction to the root's
+// level and `start` is the root, which rehang_on_track moves onto it; otherwise `start` is the
+// run's last node. Empty when the base run is shorter than two radii or nothing beyond it was
+// accepted.
 StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
                       const PointIndex& index, const std::vector<Eigen::Vector3d>& samples,
                       const std::vector<double>& weight, double spacing, std::uint32_t& start);

@@ -2,7 +2,8 @@
 // (reconstruct/bsg/stem_tracking.h): a half-seen leaning trunk whose front is hidden below every
 // whorl, with a skeleton chain that leaves it along the whorls, is tracked on its axis and the
 // chain replaced; nothing is tracked without a fitted base; and the bundled conifer grammar from
-// one station, whose trunk the BSG's chain left at every whorl, is reconstructed on its axis.
+// one station, whose trunk the BSG's chain left at every whorl, is reconstructed on its axis; and
+// below a fitted base that starts above the root the trunk goes on down to the root.
 #include <catch2/catch.hpp>
 #include <cmath>
 
@@ -135,6 +136,33 @@ TEST_CASE("stem tracking: a half-seen conifer trunk hidden below its whorls is f
   INFO("chain on the axis up to " << chain_top << ", farthest " << chain_worst);
   CHECK(chain_top > 4.7);
   CHECK(chain_worst < 0.02);
+}
+
+TEST_CASE("stem tracking: below a base that starts above the root, the trunk goes on down",
+          "[reconstruct]") {
+  Rng rng(29);
+  const std::vector<Eigen::Vector3d> scan = conifer_scan(rng);
+  const bsg::PointIndex index(scan);
+  std::vector<std::uint8_t> fitted;
+  bsg::Bsg b = wandering_skeleton(fitted);
+  // The root and the next node wander in the ground's clutter, 0.3-0.4 m off the trunk.
+  Eigen::Vector3d e1, e2;
+  bsg::perpendicular_frame(kLean, e1, e2);
+  b.pos[0] += 0.4 * e1;
+  b.pos[1] += 0.3 * e2;
+  fitted[0] = fitted[1] = 0;
+  std::uint32_t start = bsg::kNone;
+  const bsg::StemTrack track = bsg::track_trunk(b, fitted, index, scan, {}, kSpacing, start);
+  REQUIRE(start == 0);
+  REQUIRE(track.axis.size() > 10);
+  // The track starts at the root's level, on the axis.
+  const double h0 = track.axis[0].dot(kLean);
+  CHECK(std::abs(h0 - b.pos[0].dot(kLean)) < 0.02);
+  CHECK((track.axis[0] - h0 * kLean).norm() < 0.02);
+  bsg::rehang_on_track(b, fitted, track, start, kSpacing);
+  const double root_h = b.pos[0].dot(kLean);
+  CHECK((b.pos[0] - root_h * kLean).norm() < 0.02);
+  for (std::uint32_t v = 1; v < b.size(); ++v) REQUIRE(b.parent[v] < v);
 }
 
 TEST_CASE("stem tracking: nothing without a fitted base", "[reconstruct]") {
