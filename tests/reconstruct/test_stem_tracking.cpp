@@ -86,15 +86,26 @@ bsg::Bsg wandering_skeleton(std::vector<std::uint8_t>& fitted) {
   return b;
 }
 
+// The scan of one seed, its index, and the wandering skeleton on it.
+struct ConiferCase {
+  std::vector<Eigen::Vector3d> scan;
+  bsg::PointIndex index;
+  std::vector<std::uint8_t> fitted;
+  bsg::Bsg b;
+  explicit ConiferCase(std::uint64_t seed)
+      : scan(scanned(seed)), index(scan), b(wandering_skeleton(fitted)) {}
+  static std::vector<Eigen::Vector3d> scanned(std::uint64_t seed) {
+    Rng rng(seed);
+    return conifer_scan(rng);
+  }
+};
+
 }  // namespace
 
 TEST_CASE("stem tracking: a half-seen conifer trunk hidden below its whorls is followed",
           "[reconstruct]") {
-  Rng rng(17);
-  const std::vector<Eigen::Vector3d> scan = conifer_scan(rng);
-  const bsg::PointIndex index(scan);
-  std::vector<std::uint8_t> fitted;
-  bsg::Bsg b = wandering_skeleton(fitted);
+  ConiferCase c(17);
+  auto& [scan, index, fitted, b] = c;
   std::uint32_t start = bsg::kNone;
   const bsg::StemTrack track = bsg::track_trunk(b, fitted, index, scan, {}, kSpacing, start);
   REQUIRE(start == 5);  // the last node of the fitted run
@@ -140,11 +151,8 @@ TEST_CASE("stem tracking: a half-seen conifer trunk hidden below its whorls is f
 
 TEST_CASE("stem tracking: below a base that starts above the root, the trunk goes on down",
           "[reconstruct]") {
-  Rng rng(29);
-  const std::vector<Eigen::Vector3d> scan = conifer_scan(rng);
-  const bsg::PointIndex index(scan);
-  std::vector<std::uint8_t> fitted;
-  bsg::Bsg b = wandering_skeleton(fitted);
+  ConiferCase c(29);
+  auto& [scan, index, fitted, b] = c;
   // The root and the next node wander in the ground's clutter, 0.3-0.4 m off the trunk.
   Eigen::Vector3d e1, e2;
   bsg::perpendicular_frame(kLean, e1, e2);
@@ -166,11 +174,8 @@ TEST_CASE("stem tracking: below a base that starts above the root, the trunk goe
 }
 
 TEST_CASE("stem tracking: nothing without a fitted base", "[reconstruct]") {
-  Rng rng(3);
-  const std::vector<Eigen::Vector3d> scan = conifer_scan(rng);
-  const bsg::PointIndex index(scan);
-  std::vector<std::uint8_t> fitted;
-  bsg::Bsg b = wandering_skeleton(fitted);
+  ConiferCase c(3);
+  auto& [scan, index, fitted, b] = c;
   std::fill(fitted.begin(), fitted.end(), 0);
   std::uint32_t start = 0;
   const bsg::StemTrack track = bsg::track_trunk(b, fitted, index, scan, {}, kSpacing, start);
