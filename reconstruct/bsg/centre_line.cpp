@@ -129,7 +129,8 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
   return out;
 }
 
-// Nodes in parent-first order, and each node's child with the largest subtree.
+}  // namespace
+
 void tree_order(const std::vector<std::uint32_t>& parent, std::vector<std::uint32_t>& order,
                 std::vector<std::uint32_t>& main_child) {
   const std::size_t n = parent.size();
@@ -158,12 +159,10 @@ void tree_order(const std::vector<std::uint32_t>& parent, std::vector<std::uint3
   }
 }
 
-}  // namespace
-
 CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
                              const std::vector<std::uint32_t>& parent,
                              const std::vector<double>& radius,
-                             const std::vector<Eigen::Vector3d>& samples,
+                             const std::vector<Eigen::Vector3d>& samples, const PointIndex& index,
                              const std::vector<double>& sample_weight, const CentreLineParams& p) {
   const std::size_t n = pos.size();
   CentreLineResult res;
@@ -172,7 +171,6 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
   if (n == 0 || samples.size() < 8 || !(p.spacing > 0)) return res;
   std::vector<std::uint32_t> order, main_child;
   tree_order(parent, order, main_child);
-  const PointIndex index(samples);
   std::vector<std::uint8_t> fork(n, 0);
   {
     std::vector<int> children(n, 0);
@@ -485,7 +483,8 @@ std::size_t centre_skeleton(Skeleton& s, const std::vector<Eigen::Vector3d>& poi
     parent.push_back(node.parent == kNoParent ? kNone : node.parent);
     radius.push_back(node.radius);
   }
-  const CentreLineResult fit = centre_line(pos, parent, radius, points, {}, params);
+  const PointIndex index(points);
+  const CentreLineResult fit = centre_line(pos, parent, radius, points, index, {}, params);
   smooth_fitted_radii(parent, fit, radius);
   std::vector<Vec3> shift(s.size());
   for (std::size_t v = 0; v < s.size(); ++v) {

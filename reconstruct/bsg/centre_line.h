@@ -62,11 +62,12 @@ struct CentreLineResult {
 
 // Moves pos[v] onto the fitted axes (parent[v] = kNone for roots; any order). `radius` holds
 // the current radii, the hint for the size of the cross-sections. `samples` are the points,
-// `sample_weight` how many input points each stands for (empty: 1 each).
+// `index` a PointIndex over them (the caller's, shared with the later steps), `sample_weight`
+// how many input points each stands for (empty: 1 each).
 CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
                              const std::vector<std::uint32_t>& parent,
                              const std::vector<double>& radius,
-                             const std::vector<Eigen::Vector3d>& samples,
+                             const std::vector<Eigen::Vector3d>& samples, const PointIndex& index,
                              const std::vector<double>& sample_weight,
                              const CentreLineParams& params);
 
@@ -86,6 +87,12 @@ void subdivide_long_edges(Bsg& bsg, double spacing, double min_radius, double ed
 // removed.
 std::size_t drop_branches_inside_stems(Bsg& bsg, const std::vector<std::uint8_t>& fitted,
                                        double spacing);
+
+// Nodes in parent-first order (roots first, then children level by level), and each node's
+// child with the largest subtree (the first of equal ones; kNone for a tip). Shared by the
+// centre lines and the trunk tracking (stem_tracking.h).
+void tree_order(const std::vector<std::uint32_t>& parent, std::vector<std::uint32_t>& order,
+                std::vector<std::uint32_t>& main_child);
 
 // The cross-section of the samples at x across the unit direction d: the samples within `half`
 // of x along d and within `reach` of it across, as coordinates (u, v) in the frame (e1, e2) of

@@ -107,13 +107,13 @@ void centre_tree(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
   cp.spacing = voxel;
   subdivide_long_edges(b, voxel, cp.min_hint_spacings * voxel);
   const std::vector<double> weight(counts.begin(), counts.end());
-  const CentreLineResult fit = centre_line(b.pos, b.parent, b.radius, samples, weight, cp);
+  const PointIndex index(samples);
+  const CentreLineResult fit = centre_line(b.pos, b.parent, b.radius, samples, index, weight, cp);
   smooth_fitted_radii(b.parent, fit, b.radius);
   if (fit.fitted_count == 0) return;
   std::vector<std::uint8_t> fitted = fit.fitted;
   {
     // The trunk followed up the wood from its fitted base; what it passes hangs from it.
-    const PointIndex index(samples);
     std::uint32_t start = kNone;
     const StemTrack track = track_trunk(b, fitted, index, samples, weight, voxel, start);
     rehang_on_track(b, fitted, track, start, voxel);

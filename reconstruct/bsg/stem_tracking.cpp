@@ -32,19 +32,10 @@ constexpr double kAbsorb = 1.25;
 
 // The root's heaviest chain: from node 0, always the child with the largest subtree.
 std::vector<std::uint32_t> heaviest_chain(const Bsg& b) {
-  const std::size_t n = b.size();
-  std::vector<std::size_t> size(n, 1);
-  for (std::size_t v = n; v-- > 1;) size[b.parent[v]] += size[v];
-  const auto ch = children_of(b.parent);
+  std::vector<std::uint32_t> order, main_child;
+  tree_order(b.parent, order, main_child);
   std::vector<std::uint32_t> chain{0};
-  for (std::uint32_t v = 0; !ch[v].empty();) {
-    std::uint32_t best = ch[v].front();
-    for (std::uint32_t c : ch[v]) {
-      if (size[c] > size[best]) best = c;
-    }
-    chain.push_back(best);
-    v = best;
-  }
+  for (std::uint32_t v = main_child[0]; v != kNone; v = main_child[v]) chain.push_back(v);
   return chain;
 }
 

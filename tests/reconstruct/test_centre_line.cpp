@@ -200,7 +200,8 @@ ZigzagResult centre_zigzag(bool continuation) {
   p.continuation_fits = continuation;
   p.chain_cylinders = false;  // the slabs alone: what the continuation adds to them
   p.one_sided_sections = false;
-  const bsg::CentreLineResult fit = bsg::centre_line(pos, parent, hint, bark, {}, p);
+  const bsg::PointIndex index(bark);
+  const bsg::CentreLineResult fit = bsg::centre_line(pos, parent, hint, bark, index, {}, p);
   ZigzagResult out;
   for (std::size_t v = 9; v < pos.size() - 2; ++v) {
     if (!fit.fitted[v]) continue;
