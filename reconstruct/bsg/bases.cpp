@@ -1,10 +1,15 @@
 #include "reconstruct/bsg/bases.h"
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <limits>
 #include <map>
+
+#include "reconstruct/bsg/kdtree.h"
 
 namespace ramus::bsg {
 
@@ -12,7 +17,8 @@ namespace {
 
 constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kSlope = 0.35;         // steepest terrain taken as ground: about 20 degrees
-constexpr double kMinTrunkShare = 0.1;  // a further trunk has this share of the strongest's points
+constexpr double kMinTrunkShare = 0.1;  // a further trunk has this share of the strongest's bark
+constexpr double kMinCellShare = 0.1;   // a trunk's cell holds this share of the densest cell
 
 // A 2D grid over the xy bounds of the kept points.
 struct Grid2 {
@@ -96,18 +102,18 @@ double predicted_ground(const std::vector<LowPoint>& lows, const Eigen::Vector2d
 }
 
 struct Cluster {
-  double sx = 0, sy = 0, zmin = kInf, n = 0;
+  double sx = 0, sy = 0, zmin = kInf, n = 0;  // n: points
+  double area = 0;                            // the bark they sample: points x squared spacing
   double x0 = kInf, x1 = -kInf, y0 = kInf, y1 = -kInf;
 };
 
 struct Footprint : Cluster {
-  double peak = 0;
   std::vector<int> cells;
 };
 
-// Points in the slab above the footprint (its cells and their neighbours): a trunk rises
+// The bark in the slab above the footprint (its cells and their neighbours): a trunk rises
 // through it, a low branch or a fallen twig does not.
-double points_above(const Grid2& g, const Footprint& f, const std::vector<double>& above) {
+double bark_above(const Grid2& g, const Footprint& f, const std::vector<double>& above) {
   std::vector<int> seen;
   double sum = 0;
   for (int c : f.cells) {
@@ -125,16 +131,17 @@ double points_above(const Grid2& g, const Footprint& f, const std::vector<double
   return sum;
 }
 
-// Connected groups of occupied cells (cells up to two apart are neighbours, which bridges the
-// holes of sparse sampling). A trunk is a compact footprint with a dense peak; a wall is a long
-// one however dense it is.
+// Connected groups of the cells with in[c] != 0 (cells up to two apart are neighbours, which
+// bridges the holes of sparse sampling). A trunk is a compact footprint with a dense peak; a
+// wall is a long one however dense it is.
 std::vector<Footprint> footprints(const Grid2& g, const std::vector<double>& count,
-                                  const std::vector<double>& zmin, double threshold) {
+                                  const std::vector<double>& area, const std::vector<double>& zmin,
+                                  const std::vector<std::uint8_t>& in) {
   std::vector<int> label(count.size(), -1);
   std::vector<Footprint> out;
   std::vector<int> stack;
   for (int s = 0; s < int(count.size()); ++s) {
-    if (label[s] >= 0 || count[s] < threshold) continue;
+    if (label[s] >= 0 || !in[s]) continue;
     Footprint cl;
     label[s] = int(out.size());
     stack.assign(1, s);
@@ -144,8 +151,8 @@ std::vector<Footprint> footprints(const Grid2& g, const std::vector<double>& cou
       const int cx = c % g.nx, cy = c / g.nx;
       const double x = g.x0 + (cx + 0.5) * g.cell, y = g.y0 + (cy + 0.5) * g.cell;
       cl.sx += count[c] * x, cl.sy += count[c] * y, cl.n += count[c];
+      cl.area += area[c];
       cl.zmin = std::min(cl.zmin, zmin[c]);
-      cl.peak = std::max(cl.peak, count[c]);
       cl.cells.push_back(c);
       cl.x0 = std::min(cl.x0, x), cl.x1 = std::max(cl.x1, x);
       cl.y0 = std::min(cl.y0, y), cl.y1 = std::max(cl.y1, y);
@@ -154,7 +161,7 @@ std::vector<Footprint> footprints(const Grid2& g, const std::vector<double>& cou
           const int nx = cx + dx, ny = cy + dy;
           if (nx < 0 || ny < 0 || nx >= g.nx || ny >= g.ny) continue;
           const int n = ny * g.nx + nx;
-          if (label[n] < 0 && count[n] >= threshold) label[n] = label[s], stack.push_back(n);
+          if (label[n] < 0 && in[n]) label[n] = label[s], stack.push_back(n);
         }
       }
     }
@@ -185,6 +192,62 @@ bool is_line(const Grid2& g, const Footprint& f, double max_width) {
   return std::sqrt(12.0) * major > max_width && minor < 0.1 * major;
 }
 
+// The squared spacing of the scan at each of pts[ids[i]]: the squared distance to its nearest
+// other point (duplicates of merged scans skipped), at most max_spacing^2.
+std::vector<double> squared_spacing(const std::vector<Eigen::Vector3d>& pts,
+                                    const std::vector<std::uint32_t>& ids, double max_spacing) {
+  std::vector<double> s2(ids.size(), max_spacing * max_spacing);
+  const PointIndex index(pts, ids);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ids.size(), 4096), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i < range.end(); ++i) {
+      std::uint32_t nn[4];
+      double d2[4];
+      const std::size_t n = index.knn(pts[ids[i]], 4, nn, d2);
+      // nn[0] is the point itself.
+      for (std::size_t j = 1; j < n; ++j) {
+        if (d2[j] > 0) {
+          s2[i] = std::min(s2[i], d2[j]);
+          break;
+        }
+      }
+    }
+  });
+  return s2;
+}
+
+// The squared spacing of the scan around each cell of `g`: the median of the squared spacings
+// `s2` of the points (`cell[i]`: point i's cell) in the block of 3 x 3 tiles of `tile` x `tile`
+// cells around the cell's tile. The scan's resolution changes slowly across a plot, while one
+// point's spacing is noisy (a random subsample spaces its points by chance), so it is pooled
+// over a block of a few hundred points.
+std::vector<double> spacing_field(const Grid2& g, const std::vector<int>& cell,
+                                  const std::vector<double>& s2, int tile) {
+  const int tx = (g.nx + tile - 1) / tile, ty = (g.ny + tile - 1) / tile;
+  const auto tile_of = [&](int c) { return (c / g.nx / tile) * tx + (c % g.nx) / tile; };
+  std::vector<std::pair<int, double>> by_tile(cell.size());
+  for (std::size_t i = 0; i < cell.size(); ++i) by_tile[i] = {tile_of(cell[i]), s2[i]};
+  std::sort(by_tile.begin(), by_tile.end());
+  std::vector<std::size_t> first(std::size_t(tx) * ty + 1, by_tile.size());
+  for (std::size_t i = by_tile.size(); i-- > 0;) first[std::size_t(by_tile[i].first)] = i;
+  for (std::size_t t = first.size() - 1; t-- > 0;) first[t] = std::min(first[t], first[t + 1]);
+  std::vector<double> median(std::size_t(tx) * ty, 0.0), pool;
+  for (int t = 0; t < tx * ty; ++t) {
+    if (first[t] == first[t + 1]) continue;  // no point in the tile: no cell asks
+    pool.clear();
+    for (int y = std::max(0, t / tx - 1); y <= std::min(ty - 1, t / tx + 1); ++y) {
+      for (int x = std::max(0, t % tx - 1); x <= std::min(tx - 1, t % tx + 1); ++x) {
+        const int n = y * tx + x;
+        for (std::size_t i = first[n]; i < first[n + 1]; ++i) pool.push_back(by_tile[i].second);
+      }
+    }
+    std::nth_element(pool.begin(), pool.begin() + std::ptrdiff_t(pool.size() / 2), pool.end());
+    median[std::size_t(t)] = pool[pool.size() / 2];
+  }
+  std::vector<double> field(std::size_t(g.nx) * g.ny);
+  for (int c = 0; c < int(field.size()); ++c) field[c] = median[std::size_t(tile_of(c))];
+  return field;
+}
+
 }  // namespace
 
 Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std::uint8_t>& keep,
@@ -208,6 +271,8 @@ Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std:
   std::vector<double> count(std::size_t(fine.nx) * fine.ny, 0.0), zmin(count.size(), kInf);
   std::vector<double> above(count.size(), 0.0);    // the next slab up: trunks continue there
   std::vector<double> lowest(count.size(), kInf);  // lowest point of each fine cell, terrain too
+  std::vector<std::uint32_t> slabs;                // the points of the slab and the one above
+  std::vector<int> slab_cell;                      // and their cells
   std::size_t standing = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (!keep[i]) continue;
@@ -222,26 +287,63 @@ Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std:
       const int c = fine.at(pts[i]);
       count[c] += 1;
       zmin[c] = std::min(zmin[c], pts[i].z());
+      slabs.push_back(std::uint32_t(i));
+      slab_cell.push_back(c);
     } else if (h < band + 2 * p.slab) {
       above[fine.at(pts[i])] += 1;
+      slabs.push_back(std::uint32_t(i));
+      slab_cell.push_back(fine.at(pts[i]));
     }
   }
   if (standing == 0) {
     out.note = "every point lies in the terrain layer: no tree stands above the ground";
     return out;
   }
-  const double peak = *std::max_element(count.begin(), count.end());
-  // A trunk is vertical, so its cells collect far more points than those of low branches.
-  const double threshold = std::max(2.0, 0.1 * peak);
-  std::vector<Footprint> found = footprints(fine, count, zmin, threshold);
+  // The bark of each cell: each point stands for the square of the scan's spacing around it. A
+  // scanner's samples thin out with the square of the range (one station in a plot sees the
+  // trunk beside it tens of times denser than one 10 m away); the bark does not.
+  const std::vector<double> s2 = squared_spacing(pts, slabs, fine.cell);
+  const std::vector<double> field = spacing_field(fine, slab_cell, s2, 4);
+  std::vector<double> area(count.size()), area_above(count.size());
+  for (std::size_t c = 0; c < count.size(); ++c) {
+    area[c] = count[c] * field[c];
+    area_above[c] = above[c] * field[c];
+  }
+  const double peak = *std::max_element(area.begin(), area.end());
+  // A trunk is vertical, so its cells hold far more points than those of low branches: at least
+  // a tenth of the densest cell's. Counts alone leave the far trunks of a plot below any share of
+  // the one beside the station; where the scan is sparser a tenth of the densest cell's bark will
+  // do, but only away from the clusters of the counts (two cells or more), which stay as they
+  // were: within a tree the far side and the skirt of branches are sparser too, and would widen
+  // its trunk's footprint and pull its centre off the trunk. Clusters compare by bark after this.
+  const double peak_count = *std::max_element(count.begin(), count.end());
+  std::vector<std::uint8_t> dense(count.size()), any(count.size());
+  for (std::size_t c = 0; c < count.size(); ++c) {
+    dense[c] = count[c] >= std::max(2.0, kMinCellShare * peak_count);
+    any[c] = count[c] >= 1;
+  }
+  std::vector<std::uint8_t> far_bark(count.size(), 0);
+  for (int c = 0; c < int(count.size()); ++c) {
+    if (count[c] < 2 || area[c] < kMinCellShare * peak || dense[c]) continue;
+    bool near_dense = false;
+    const int cx = c % fine.nx, cy = c / fine.nx;
+    for (int y = std::max(0, cy - 2); y <= std::min(fine.ny - 1, cy + 2) && !near_dense; ++y) {
+      for (int x = std::max(0, cx - 2); x <= std::min(fine.nx - 1, cx + 2); ++x) {
+        near_dense |= dense[std::size_t(y * fine.nx + x)] != 0;
+      }
+    }
+    far_bark[c] = !near_dense;
+  }
+  std::vector<Footprint> found = footprints(fine, count, area, zmin, dense);
+  for (Footprint& f : footprints(fine, count, area, zmin, far_bark)) found.push_back(std::move(f));
   // Strongest first; a weaker cluster close to a stronger one is a low branch of its tree.
   std::stable_sort(found.begin(), found.end(),
-                   [](const auto& a, const auto& b) { return a.n > b.n; });
+                   [](const auto& a, const auto& b) { return a.area > b.area; });
   std::size_t too_wide = 0;
   const std::vector<LowPoint> lows = low_points(lowest, fine);
   // The same footprints down to single points: a sparse fence breaks into small dense pieces
   // that each look like a trunk, but together they are one long line.
-  const std::vector<Footprint> loose = footprints(fine, count, zmin, 1.0);
+  const std::vector<Footprint> loose = footprints(fine, count, area, zmin, any);
   std::vector<int> loose_of(count.size(), -1);
   for (std::size_t k = 0; k < loose.size(); ++k) {
     for (int c : loose[k].cells) loose_of[std::size_t(c)] = int(k);
@@ -251,9 +353,9 @@ Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std:
   for (const Footprint& cl : found) {
     const double width = std::max(cl.x1 - cl.x0, cl.y1 - cl.y0) + fine.cell;
     if (cl.n < 5) continue;
-    if (out.roots.empty()) strongest = cl.n;
+    if (out.roots.empty()) strongest = cl.area;
     // The strongest cluster is always a candidate; others must rise like a trunk.
-    if (!out.roots.empty() && points_above(fine, cl, above) < 0.5 * cl.n) continue;
+    if (!out.roots.empty() && bark_above(fine, cl, area_above) < 0.5 * cl.area) continue;
     // A trunk's footprint is round (a half ring from one side); a piece of wall is a line.
     const double thickness = std::min(cl.x1 - cl.x0, cl.y1 - cl.y0) + fine.cell;
     if (width > p.max_trunk_width || (width > 4 * fine.cell && thickness < 0.3 * width)) {
@@ -281,15 +383,15 @@ Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std:
     if (!out.roots.empty() && foot > predicted + p.ground_band) continue;
     // ... and be a trunk of comparable weight: the slab under a crown also collects bundles of
     // hanging twigs, which are vertical and reach the ground too but hold a few per cent of the
-    // points of a trunk (measured 3-4% on the weeping and conifer examples).
-    if (!out.roots.empty() && cl.n < kMinTrunkShare * strongest) continue;
+    // bark of a trunk (measured 3-4% of the points on the weeping and conifer examples).
+    if (!out.roots.empty() && cl.area < kMinTrunkShare * strongest) continue;
     out.roots.push_back(base);
     out.reach.push_back(reach);
   }
   if (out.roots.empty() && too_wide == 0) {
     // Sparse scans (airborne LiDAR) may hold only a handful of trunk points: fall back to the
     // strongest group of any standing points near the ground, when it is narrow enough.
-    found = footprints(fine, count, zmin, 1.0);
+    found = footprints(fine, count, area, zmin, any);
     std::stable_sort(found.begin(), found.end(),
                      [](const auto& a, const auto& b) { return a.n > b.n; });
     if (!found.empty()) {
