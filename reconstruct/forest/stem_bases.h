@@ -2,9 +2,10 @@
 // tools find trees in terrestrial scans (a slice, usually around breast height, above a ground
 // model, clustered in the ground plane; e.g. Liang et al. 2016, "Terrestrial laser scanning in
 // forest inventories", ISPRS J. Photogramm. 115, section 4.2). Livny et al.'s density clusters
-// (bsg/bases) compare every trunk with the densest one, and in a plot scanned from a grid of
-// stations a trunk 2 m from a station holds fifty times the points of one 15 m away, so far trunks
-// are lost; here a stem is an occupied footprint, whatever its density.
+// (bsg/bases) compare every trunk with the densest one (by the bark their points sample, which
+// keeps most far trunks of a plot; by points alone, a trunk 2 m from a station holds fifty times
+// the points of one 15 m away and the far trunks are lost); here a stem is an occupied footprint,
+// whatever its density.
 //
 // Everything is on grids aligned to world coordinate 0, and a stem depends only on the points
 // near it, so a tile whose buffer covers the stem finds the same base as the whole plot
