@@ -8,13 +8,14 @@
 #include <memory>
 #include <regex>
 
+#include "backends/mesh/gltf_container.h"
 #include "backends/mesh/gltf_writer.h"
-#include "mesh/tree_mesh.h"
 #include "cli/grow_args.h"
 #include "cli/output_path.h"
 #include "cli/read_file.h"
 #include "cli/view_page.h"
 #include "core/atomic_file.h"
+#include "mesh/tree_mesh.h"
 
 namespace ramus::cli {
 namespace {
@@ -67,7 +68,11 @@ int run_view(const ViewArgs& a, const GlobalOptions& global) {
   asset.name = fs::path(a.grow.file).filename().string();
   if (ext == ".glb") {
     asset.main = read_file_bytes(a.grow.file);
-    if (asset.main.compare(0, 4, "glTF") != 0) throw UserError(a.grow.file + " is not a GLB file");
+    // The page hands the bytes to the browser's glTF loader: a container whose header or chunks
+    // lie about them is refused here, where the byte can be named (gltf_container.h).
+    const std::string e = mesh::glb_layout_error(
+        reinterpret_cast<const unsigned char*>(asset.main.data()), asset.main.size());
+    if (!e.empty()) throw UserError(a.grow.file + " is not a GLB file: " + e);
   } else if (ext == ".gltf") {
     ViewAsset g = read_gltf(a.grow.file);
     g.name = asset.name;

@@ -59,6 +59,44 @@ std::string glb_bin(const std::string& glb) {
   return glb.substr(at + 8, bin_len);
 }
 
+std::string glb_layout_error(const unsigned char* data, std::size_t size) {
+  const auto u32 = [&](std::size_t at) {
+    return std::uint32_t(data[at]) | std::uint32_t(data[at + 1]) << 8 |
+           std::uint32_t(data[at + 2]) << 16 | std::uint32_t(data[at + 3]) << 24;
+  };
+  const auto at = [](std::size_t byte, const std::string& what) {
+    return "byte " + std::to_string(byte) + ": " + what;
+  };
+  if (size < 12) return at(size, "the file ends inside the 12-byte GLB header");
+  if (u32(0) != 0x46546C67u) return at(0, "expected the GLB magic \"glTF\"");
+  if (u32(4) != 2) return at(4, "expected GLB version 2, found " + std::to_string(u32(4)));
+  if (u32(8) != size) {
+    return at(8, "the header gives a length of " + std::to_string(u32(8)) +
+                     " bytes, the file has " + std::to_string(size));
+  }
+  constexpr std::uint32_t kJson = 0x4E4F534Au, kBin = 0x004E4942u;
+  std::size_t offset = 12;
+  for (int chunk = 0; offset < size; ++chunk) {
+    if (size - offset < 8) return at(offset, "the file ends inside a chunk header (8 bytes)");
+    const std::uint32_t length = u32(offset), type = u32(offset + 4);
+    if (chunk == 0 && type != kJson) return at(offset + 4, "expected the JSON chunk first");
+    if (chunk > 0 && type == kJson) return at(offset + 4, "a second JSON chunk");
+    if (type == kBin && chunk != 1) return at(offset + 4, "a BIN chunk that is not the second");
+    if (length % 4 != 0) {
+      return at(offset, "a chunk length of " + std::to_string(length) +
+                            " bytes, not a multiple of 4 (chunks are 4-byte aligned)");
+    }
+    if (length > size - offset - 8) {
+      return at(offset, "a chunk of " + std::to_string(length) +
+                            " bytes, past the end of the file (" +
+                            std::to_string(size - offset - 8) + " bytes left)");
+    }
+    offset += 8 + std::size_t(length);
+  }
+  if (offset == 12) return at(12, "expected the JSON chunk");
+  return {};
+}
+
 bool write_gltf_files(
     const std::string& path,
     const std::function<GltfBytes(bool binary, const std::string& bin_uri)>& encode) {

@@ -10,9 +10,11 @@
 
 #include <algorithm>
 #include <cstring>
+#include <filesystem>
 #include <set>
 
 #include "backends/mesh/gltf_accessors.h"
+#include "backends/mesh/gltf_container.h"
 #include "backends/mesh/mesh_reader.h"
 #include "core/input_file.h"
 #include "core/up_axis.h"
@@ -368,18 +370,22 @@ TreeMesh read_gltf_mesh(const std::string& path) {
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&skip_image, nullptr);
   std::string err, warn;
-  // The GLB magic decides, not the name: a .gltf that is really binary still reads.
-  std::string magic(4, '\0');
-  if (FILE* f = std::fopen(path.c_str(), "rb")) {
-    magic.resize(std::fread(magic.data(), 1, 4, f));
-    std::fclose(f);
-  } else {
-    throw MeshError(path + ": cannot open the file");
+  // The GLB magic decides, not the name: a .gltf that is really binary still reads. A GLB's
+  // layout is checked before tinygltf reads it (gltf_container.h).
+  std::string data, e;
+  if (!read_input_file(path, data, e)) throw MeshError(path + ": " + e);
+  const bool binary = data.compare(0, 4, "glTF") == 0;
+  if (binary) {
+    e = glb_layout_error(reinterpret_cast<const unsigned char*>(data.data()), data.size());
+    if (!e.empty()) throw MeshError(path + ": cannot read the glTF file: " + e);
   }
-  if (std::string e = input_file_size_error(path); !e.empty()) throw MeshError(path + ": " + e);
-  const bool binary = magic == "glTF";
-  const bool ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                         : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+  const std::string base = std::filesystem::path(path).parent_path().string();
+  const bool ok =
+      binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
+                                           reinterpret_cast<const unsigned char*>(data.data()),
+                                           static_cast<unsigned int>(data.size()), base)
+             : loader.LoadASCIIFromString(&model, &err, &warn, data.data(),
+                                          static_cast<unsigned int>(data.size()), base);
   if (!ok) {
     while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
     throw MeshError(path + ": cannot read the glTF file" + (err.empty() ? "" : ": " + err));

@@ -9,9 +9,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <filesystem>
 #include <map>
 
 #include "backends/mesh/gltf_accessors.h"
+#include "backends/mesh/gltf_container.h"
 #include "backends/pieces/piece_build.h"
 #include "core/input_file.h"
 
@@ -143,7 +145,14 @@ PieceDraft draft_gltf_file(const std::string& name, const std::string& path,
   bool binary = path.size() >= 4 && (path.compare(path.size() - 4, 4, ".glb") == 0 ||
                                      path.compare(path.size() - 4, 4, ".GLB") == 0);
   bool ok = false;
+  // A GLB's layout is checked before tinygltf reads it (gltf_container.h).
+  const auto check_glb = [&](const std::string& data) {
+    const std::string e =
+        mesh::glb_layout_error(reinterpret_cast<const unsigned char*>(data.data()), data.size());
+    if (!e.empty()) throw PiecesError(path + ": cannot read the glTF file: " + e);
+  };
   if (bytes) {
+    if (binary) check_glb(*bytes);
     // An embedded file is self-contained (the .rmb encoder refuses a .gltf whose buffers or
     // images are files): a damaged or crafted one that names a file reads nothing from disk.
     tinygltf::FsCallbacks no_files{};
@@ -162,10 +171,16 @@ PieceDraft draft_gltf_file(const std::string& name, const std::string& path,
                                               static_cast<unsigned int>(bytes->size()), "")
                 : loader.LoadASCIIFromString(&model, &err, &warn, bytes->data(),
                                              static_cast<unsigned int>(bytes->size()), "");
+  } else if (binary) {
+    std::string data, e;
+    if (!read_input_file(path, data, e)) throw PiecesError(path + ": " + e);
+    check_glb(data);
+    ok = loader.LoadBinaryFromMemory(
+        &model, &err, &warn, reinterpret_cast<const unsigned char*>(data.data()),
+        static_cast<unsigned int>(data.size()), std::filesystem::path(path).parent_path().string());
   } else {
     if (std::string e = input_file_size_error(path); !e.empty()) throw PiecesError(path + ": " + e);
-    ok = binary ? loader.LoadBinaryFromFile(&model, &err, &warn, path)
-                : loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    ok = loader.LoadASCIIFromFile(&model, &err, &warn, path);
   }
   if (!ok)
     throw PiecesError(path + ": cannot read the glTF file" + (err.empty() ? "" : ": " + err));

@@ -198,7 +198,7 @@ TEST_CASE("preview refuses options that do not apply and broken files, writing n
       {{out("e.obj"), "-D", "a=1"}, "-D/--define applies to grammars only"},
       {{scan, "-n", "2"}, "-n/--steps applies to grammars only"},
       {{scan, "--pipe-exponent", "2"}, "--pipe-exponent applies to grammars and skeletons"},
-      {{out("cut.glb")}, "cut.glb: cannot read the glTF file"},
+      {{out("cut.glb")}, "cut.glb: cannot read the glTF file: byte 8: the header gives a length"},
       {{out("junk.obj")}, "junk.obj"},
       {{out("what.bin")}, "cannot tell what this is"},
       {{out("missing.glb")}, "missing.glb"},

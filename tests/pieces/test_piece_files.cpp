@@ -219,11 +219,12 @@ TEST_CASE("bad piece files are reported with file and line") {
   CHECK_THROWS_WITH(draft_mesh_file("T", square),
                     Catch::Contains("rim:root is not a regular hexagon"));
   CHECK_THROWS_WITH(draft_mesh_file("T", (tmp.path / "none.glb").string()),
-                    Catch::Contains("cannot read the glTF file"));
+                    Catch::Contains("none.glb: cannot open the file"));
   CHECK_THROWS_WITH(draft_mesh_file("T", (tmp.path / "x.stl").string()),
                     Catch::Contains("a piece file is .gltf, .glb or .obj"));
   std::string junk = write("junk.glb", "glTF not really");
-  CHECK_THROWS_WITH(draft_mesh_file("T", junk), Catch::Contains("cannot read the glTF file"));
+  CHECK_THROWS_WITH(draft_mesh_file("T", junk),
+                    Catch::Contains("cannot read the glTF file: byte 4: expected GLB version 2"));
 }
 
 TEST_CASE("a missing piece file is a diagnostic at the mesh constructor") {
