@@ -262,20 +262,20 @@ std::string fmt_voxel_setting(const ast::VoxelSetting& s) {
 std::string fmt_voxel_rule(const ast::VoxelRule& r) {
   // Children are separated by spaces only, so each is a primary: `[0 (-1) ...]`, never `0 -1`.
   // A name before a child in parentheses would read as a call, `u (!u)` as `u(!u)`: such a
-  // name is parenthesised too, `(u) (!u)`.
+  // name is parenthesised too, `(u) (!u)`. From the last child back, so that a name before a
+  // name that this parenthesises is parenthesised as well: `s h (!u)` -> `(s) (h) (!u)`, not
+  // `s (h) (!u)`, which reads as `s(h) (!u)`.
   std::vector<std::string> children;
   for (const ast::Expr& c : r.children) children.push_back(expr_at(c, kPrimary));
-  std::string s = expr_at(r.parent, kTernary) + " -> [";
-  for (std::size_t i = 0; i < children.size(); ++i) {
-    if (i > 0) s += " ";
+  for (std::size_t i = children.size(); i-- > 0;) {
     const bool bare_name = std::holds_alternative<ast::NameRef>(r.children[i].node) &&
                            children[i].front() != '(';  // not already written in parentheses
     if (bare_name && i + 1 < children.size() && children[i + 1].front() == '(') {
-      s += "(" + children[i] + ")";
-    } else {
-      s += children[i];
+      children[i] = "(" + children[i] + ")";
     }
   }
+  std::string s = expr_at(r.parent, kTernary) + " -> [";
+  for (std::size_t i = 0; i < children.size(); ++i) s += (i > 0 ? " " : "") + children[i];
   s += "]";
   if (r.weight) {
     std::string w = expr_at(*r.weight, kPrimary);

@@ -160,6 +160,18 @@ TEST_CASE("format: pieces and voxels blocks", "[format]") {
   CHECK(fmt(out) == out);
 }
 
+TEST_CASE("format: voxel children that are names stay apart from a parenthesised one", "[format]") {
+  // `h 0>=1` are two children; printed `h (0 >= 1)` they would read as the call `h(0 >= 1)`, so
+  // `h` is parenthesised, and then so is the name before it (found by fuzz_check_format).
+  const char* in = "voxels v{0->[0 3 s h 0>=1 1 1 1];}\n";
+  const char* out =
+      "voxels v {\n"
+      "  0 -> [0 3 (s) (h) (0 >= 1) 1 1 1];\n"
+      "}\n";
+  CHECK(fmt(in) == out);
+  CHECK(fmt(out) == out);
+}
+
 TEST_CASE("format: a file without source text", "[format]") {
   auto p = parse_text("t.ramus", "const a = 1; lsystem s { axiom F; } lsystem t { axiom F; }");
   REQUIRE(p->ok);
