@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/input_file.h"
 #include "core/vec3.h"
 
 namespace ramus::gltf_accessors {
@@ -94,6 +95,29 @@ inline std::vector<std::uint32_t> indices(const tinygltf::Model& m, const tinygl
     out.push_back(v);
   }
   return out;
+}
+
+// Filesystem callbacks for the files a .gltf names (buffers, images): tinygltf's own, except that
+// files are read with read_input_file (core/input_file.h), which refuses a directory and a file
+// over the size limit before reading. tinygltf's reader took a directory's size for 2^63 - 1 bytes
+// and tried to allocate them (found by fuzz_piece_gltf).
+inline tinygltf::FsCallbacks checked_file_callbacks() {
+  tinygltf::FsCallbacks fs{};
+  fs.FileExists = &tinygltf::FileExists;
+  fs.ExpandFilePath = &tinygltf::ExpandFilePath;
+  fs.ReadWholeFile = [](std::vector<unsigned char>* out, std::string* err, const std::string& path,
+                        void*) {
+    std::string bytes, e;
+    if (!read_input_file(path, bytes, e)) {
+      if (err) *err += path + ": " + e + "\n";
+      return false;
+    }
+    out->assign(bytes.begin(), bytes.end());
+    return true;
+  };
+  fs.WriteWholeFile = &tinygltf::WriteWholeFile;
+  fs.user_data = nullptr;
+  return fs;
 }
 
 }  // namespace ramus::gltf_accessors

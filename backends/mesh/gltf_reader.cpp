@@ -369,6 +369,7 @@ TreeMesh read_gltf_mesh(const std::string& path) {
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&skip_image, nullptr);
+  loader.SetFsCallbacks(gltf_accessors::checked_file_callbacks());
   std::string err, warn;
   // The GLB magic decides, not the name: a .gltf that is really binary still reads. A GLB's
   // layout is checked before tinygltf reads it (gltf_container.h).

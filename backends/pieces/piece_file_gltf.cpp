@@ -172,6 +172,7 @@ PieceDraft draft_gltf_file(const std::string& name, const std::string& path,
                 : loader.LoadASCIIFromString(&model, &err, &warn, bytes->data(),
                                              static_cast<unsigned int>(bytes->size()), "");
   } else if (binary) {
+    loader.SetFsCallbacks(gltf_accessors::checked_file_callbacks());
     std::string data, e;
     if (!read_input_file(path, data, e)) throw PiecesError(path + ": " + e);
     check_glb(data);
@@ -180,6 +181,7 @@ PieceDraft draft_gltf_file(const std::string& name, const std::string& path,
         static_cast<unsigned int>(data.size()), std::filesystem::path(path).parent_path().string());
   } else {
     if (std::string e = input_file_size_error(path); !e.empty()) throw PiecesError(path + ": " + e);
+    loader.SetFsCallbacks(gltf_accessors::checked_file_callbacks());
     ok = loader.LoadASCIIFromFile(&model, &err, &warn, path);
   }
   if (!ok)

@@ -111,7 +111,11 @@ TEST_CASE("broken mesh files are MeshErrors naming the file", "[mesh][reader]") 
   std::ofstream(dir / "cut.glb", std::ios::binary) << bytes.substr(0, bytes.size() / 2);
   std::ofstream(dir / "junk.obj") << "this is not\nan OBJ file\n";
   std::ofstream(dir / "loose.obj") << "v 0 0 0\nv 1 0 0\nf 1 2 9\n";
-  for (const char* name : {"cut.glb", "junk.obj", "loose.obj", "missing.ply"}) {
+  // A buffer whose URI names a directory: tinygltf took its size for 2^63 - 1 bytes.
+  fs::create_directories(dir / "folder");
+  std::ofstream(dir / "dir_buffer.gltf")
+      << R"({"asset":{"version":"2.0"},"buffers":[{"byteLength":8,"uri":"folder"}]})";
+  for (const char* name : {"cut.glb", "junk.obj", "loose.obj", "missing.ply", "dir_buffer.gltf"}) {
     INFO(name);
     try {
       read_mesh_file((dir / name).string());
