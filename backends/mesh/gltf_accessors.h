@@ -10,10 +10,12 @@
 
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "backends/mesh/gltf_container.h"
 #include "core/input_file.h"
 #include "core/vec3.h"
 
@@ -118,6 +120,45 @@ inline tinygltf::FsCallbacks checked_file_callbacks() {
   fs.WriteWholeFile = &tinygltf::WriteWholeFile;
   fs.user_data = nullptr;
   return fs;
+}
+
+// Reads a model from the bytes of a glTF file that `path` names (for the container's choice
+// only: nothing is read from it): a GLB when the bytes begin with its magic or the name ends in
+// .glb (a .glb without the magic is a damaged container, and glb_layout_error says where), its
+// layout checked before tinygltf sees it (gltf_container.h); JSON text otherwise. `base` is the
+// folder of the files a .gltf names, read through the loader's callbacks. Returns what is wrong
+// (no file name: the caller adds it and its own error type), "" when the model was read.
+inline std::string load_model(tinygltf::TinyGLTF& loader, tinygltf::Model& model,
+                              const std::string& path, const std::string& bytes,
+                              const std::string& base) {
+  const auto ends_with = [&](const char* ext) {
+    return path.size() >= 4 && path.compare(path.size() - 4, 4, ext) == 0;
+  };
+  const bool binary = bytes.compare(0, 4, "glTF") == 0 || ends_with(".glb") || ends_with(".GLB");
+  const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+  if (binary) {
+    if (std::string e = mesh::glb_layout_error(data, bytes.size()); !e.empty()) {
+      return "cannot read the glTF file: " + e;
+    }
+  }
+  std::string err, warn;
+  const auto size = static_cast<unsigned int>(bytes.size());
+  const bool ok = binary
+                      ? loader.LoadBinaryFromMemory(&model, &err, &warn, data, size, base)
+                      : loader.LoadASCIIFromString(&model, &err, &warn, bytes.data(), size, base);
+  if (ok) return "";
+  while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
+  return "cannot read the glTF file" + (err.empty() ? "" : ": " + err);
+}
+
+// Reads the glTF file at `path` with read_input_file (a directory and the size limit refused
+// first), and the files it names through checked_file_callbacks, from its folder.
+inline std::string load_model_file(tinygltf::TinyGLTF& loader, tinygltf::Model& model,
+                                   const std::string& path) {
+  std::string bytes, e;
+  if (!read_input_file(path, bytes, e)) return e;
+  loader.SetFsCallbacks(checked_file_callbacks());
+  return load_model(loader, model, path, bytes, std::filesystem::path(path).parent_path().string());
 }
 
 }  // namespace ramus::gltf_accessors

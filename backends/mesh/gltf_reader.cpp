@@ -10,13 +10,10 @@
 
 #include <algorithm>
 #include <cstring>
-#include <filesystem>
 #include <set>
 
 #include "backends/mesh/gltf_accessors.h"
-#include "backends/mesh/gltf_container.h"
 #include "backends/mesh/mesh_reader.h"
-#include "core/input_file.h"
 #include "core/up_axis.h"
 
 namespace ramus::mesh {
@@ -369,27 +366,8 @@ TreeMesh read_gltf_mesh(const std::string& path) {
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
   loader.SetImageLoader(&skip_image, nullptr);
-  loader.SetFsCallbacks(gltf_accessors::checked_file_callbacks());
-  std::string err, warn;
-  // The GLB magic decides, not the name: a .gltf that is really binary still reads. A GLB's
-  // layout is checked before tinygltf reads it (gltf_container.h).
-  std::string data, e;
-  if (!read_input_file(path, data, e)) throw MeshError(path + ": " + e);
-  const bool binary = data.compare(0, 4, "glTF") == 0;
-  if (binary) {
-    e = glb_layout_error(reinterpret_cast<const unsigned char*>(data.data()), data.size());
-    if (!e.empty()) throw MeshError(path + ": cannot read the glTF file: " + e);
-  }
-  const std::string base = std::filesystem::path(path).parent_path().string();
-  const bool ok =
-      binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
-                                           reinterpret_cast<const unsigned char*>(data.data()),
-                                           static_cast<unsigned int>(data.size()), base)
-             : loader.LoadASCIIFromString(&model, &err, &warn, data.data(),
-                                          static_cast<unsigned int>(data.size()), base);
-  if (!ok) {
-    while (!err.empty() && (err.back() == '\n' || err.back() == ' ')) err.pop_back();
-    throw MeshError(path + ": cannot read the glTF file" + (err.empty() ? "" : ": " + err));
+  if (std::string e = gltf_accessors::load_model_file(loader, model, path); !e.empty()) {
+    throw MeshError(path + ": " + e);
   }
   Reader r{model, path, {}, {}, ReadMeshBuilder(path)};
   r.run();

@@ -9,13 +9,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <filesystem>
 #include <map>
 
 #include "backends/mesh/gltf_accessors.h"
-#include "backends/mesh/gltf_container.h"
 #include "backends/pieces/piece_build.h"
-#include "core/input_file.h"
 
 namespace ramus::pieces {
 
@@ -141,18 +138,8 @@ PieceDraft draft_gltf_file(const std::string& name, const std::string& path,
                            const std::string* bytes) {
   tinygltf::Model model;
   tinygltf::TinyGLTF loader;
-  std::string err, warn;
-  bool binary = path.size() >= 4 && (path.compare(path.size() - 4, 4, ".glb") == 0 ||
-                                     path.compare(path.size() - 4, 4, ".GLB") == 0);
-  bool ok = false;
-  // A GLB's layout is checked before tinygltf reads it (gltf_container.h).
-  const auto check_glb = [&](const std::string& data) {
-    const std::string e =
-        mesh::glb_layout_error(reinterpret_cast<const unsigned char*>(data.data()), data.size());
-    if (!e.empty()) throw PiecesError(path + ": cannot read the glTF file: " + e);
-  };
+  std::string e;
   if (bytes) {
-    if (binary) check_glb(*bytes);
     // An embedded file is self-contained (the .rmb encoder refuses a .gltf whose buffers or
     // images are files): a damaged or crafted one that names a file reads nothing from disk.
     tinygltf::FsCallbacks no_files{};
@@ -166,26 +153,11 @@ PieceDraft draft_gltf_file(const std::string& name, const std::string& path,
     no_files.WriteWholeFile = [](std::string*, const std::string&,
                                  const std::vector<unsigned char>&, void*) { return false; };
     loader.SetFsCallbacks(no_files);
-    ok = binary ? loader.LoadBinaryFromMemory(&model, &err, &warn,
-                                              reinterpret_cast<const unsigned char*>(bytes->data()),
-                                              static_cast<unsigned int>(bytes->size()), "")
-                : loader.LoadASCIIFromString(&model, &err, &warn, bytes->data(),
-                                             static_cast<unsigned int>(bytes->size()), "");
-  } else if (binary) {
-    loader.SetFsCallbacks(gltf_accessors::checked_file_callbacks());
-    std::string data, e;
-    if (!read_input_file(path, data, e)) throw PiecesError(path + ": " + e);
-    check_glb(data);
-    ok = loader.LoadBinaryFromMemory(
-        &model, &err, &warn, reinterpret_cast<const unsigned char*>(data.data()),
-        static_cast<unsigned int>(data.size()), std::filesystem::path(path).parent_path().string());
+    e = gltf_accessors::load_model(loader, model, path, *bytes, "");
   } else {
-    if (std::string e = input_file_size_error(path); !e.empty()) throw PiecesError(path + ": " + e);
-    loader.SetFsCallbacks(gltf_accessors::checked_file_callbacks());
-    ok = loader.LoadASCIIFromFile(&model, &err, &warn, path);
+    e = gltf_accessors::load_model_file(loader, model, path);
   }
-  if (!ok)
-    throw PiecesError(path + ": cannot read the glTF file" + (err.empty() ? "" : ": " + err));
+  if (!e.empty()) throw PiecesError(path + ": " + e);
   Reader r{model, path};
   // Merge tolerance: a millionth of the file's extent.
   double extent = 0;
