@@ -200,16 +200,8 @@ std::vector<double> squared_spacing(const std::vector<Eigen::Vector3d>& pts,
   const PointIndex index(pts, ids);
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, ids.size(), 4096), [&](const auto& range) {
     for (std::size_t i = range.begin(); i < range.end(); ++i) {
-      std::uint32_t nn[4];
-      double d2[4];
-      const std::size_t n = index.knn(pts[ids[i]], 4, nn, d2);
-      // nn[0] is the point itself.
-      for (std::size_t j = 1; j < n; ++j) {
-        if (d2[j] > 0) {
-          s2[i] = std::min(s2[i], d2[j]);
-          break;
-        }
-      }
+      const double d2 = nearest_other_d2(index, pts[ids[i]], true);
+      if (d2 >= 0) s2[i] = std::min(s2[i], d2);
     }
   });
   return s2;

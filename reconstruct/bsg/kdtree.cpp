@@ -175,24 +175,26 @@ void PointIndex::within_slab(const Eigen::Vector3d& q, double radius, const Eige
   visit(visit, tree_->root_node);
 }
 
+double nearest_other_d2(const PointIndex& index, const Eigen::Vector3d& q, bool skip_duplicates) {
+  std::uint32_t nn[4];
+  double d2[4];
+  const std::size_t n = index.knn(q, skip_duplicates ? 4 : 2, nn, d2);
+  // nn[0] is the point itself (or a duplicate of it).
+  for (std::size_t j = 1; j < n; ++j) {
+    if (!skip_duplicates || d2[j] > 0) return d2[j];
+  }
+  return -1.0;
+}
+
 double median_spacing(const std::vector<Eigen::Vector3d>& pts,
                       const std::vector<std::uint32_t>& ids, bool skip_duplicates) {
   if (ids.size() < 2) return 0.0;
   const PointIndex index(pts, ids);
   std::vector<double> d;
   const std::size_t stride = std::max<std::size_t>(1, ids.size() / 4000);
-  const std::size_t k = skip_duplicates ? 4 : 2;
   for (std::size_t i = 0; i < ids.size(); i += stride) {
-    std::uint32_t nn[4];
-    double d2[4];
-    const std::size_t n = index.knn(pts[ids[i]], k, nn, d2);
-    // nn[0] is the point itself (or a duplicate of it).
-    for (std::size_t j = 1; j < n; ++j) {
-      if (!skip_duplicates || d2[j] > 0) {
-        d.push_back(std::sqrt(d2[j]));
-        break;
-      }
-    }
+    const double d2 = nearest_other_d2(index, pts[ids[i]], skip_duplicates);
+    if (d2 >= 0) d.push_back(std::sqrt(d2));
   }
   if (d.empty()) return 0.0;
   std::nth_element(d.begin(), d.begin() + std::ptrdiff_t(d.size() / 2), d.end());

@@ -55,6 +55,12 @@ class PointIndex {
   std::unique_ptr<Tree> tree_;
 };
 
+// The squared distance from q, a point of `index`, to its nearest other indexed point: the next
+// nearest after q itself (or a duplicate of it). With `skip_duplicates` the nearest at a positive
+// distance among the next three (duplicates of merged scans are not the scan's spacing). -1 when
+// there is none.
+double nearest_other_d2(const PointIndex& index, const Eigen::Vector3d& q, bool skip_duplicates);
+
 // Median distance from a point to its nearest other point, over a strided sample of at most
 // about 4000 of pts[ids[i]] (0 when fewer than two points). Duplicated points count with
 // distance 0 unless `skip_duplicates`, which takes the nearest point at a positive distance.
