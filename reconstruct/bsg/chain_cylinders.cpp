@@ -12,6 +12,11 @@ namespace ramus::bsg {
 
 namespace {
 
+// A branch whose fitted radius is above this share of the stem's below it is taken for one of
+// two co-dominant stems of a fork, not for a side branch (bridge_unfitted; the value was chosen
+// over the one-station harness trees turned to six azimuths, README, *Centre lines*).
+constexpr double kCoDominant = 0.85;
+
 struct Piece {
   std::vector<std::uint32_t> nodes;  // along the chain
   double radius = 0;                 // the chain's radius estimate
@@ -78,7 +83,9 @@ std::vector<Piece> pieces_of_chains(const std::vector<Eigen::Vector3d>& pos,
 // A node between two fitted nodes (at most `steps` nodes away on either side, downwards along
 // the heaviest child) that neither its cross-section nor a cylinder placed lies on the segment
 // between them: the BSG's nodes on a thick limb are a few radii apart, and one node left on the
-// bark (often a fork where a spur leaves) makes a detour of a radius across the limb.
+// bark (often a fork where a spur leaves) makes a detour of a radius across the limb. Near the
+// base of a side branch (the fitted node below is on its parent stem) the node goes onto the
+// branch's own axis instead.
 std::size_t bridge_unfitted(std::vector<Eigen::Vector3d>& pos,
                             const std::vector<std::uint32_t>& parent,
                             const std::vector<double>& hint, std::vector<std::uint8_t>& fitted,
@@ -113,16 +120,39 @@ std::size_t bridge_unfitted(std::vector<Eigen::Vector3d>& pos,
   std::vector<double> radius;
   for (std::uint32_t v = 0; v < n; ++v) {
     if (fitted[v] || ch[v].empty() || parent[v] >= n || hint[v] < thin) continue;
+    // `side`: the way down to a leaves v's branch for the stem it grows from.
     std::uint32_t a = parent[v], b = heaviest(v);
-    for (int k = 0; k < steps && !fitted[a] && parent[a] < n; ++k) a = parent[a];
+    bool side = heaviest(a) != v;
+    for (int k = 0; k < steps && !fitted[a] && parent[a] < n; ++k) {
+      side |= heaviest(parent[a]) != a;
+      a = parent[a];
+    }
     for (int k = 0; k < steps && !fitted[b] && !ch[b].empty(); ++k) b = heaviest(b);
     if (!fitted[a] || !fitted[b]) continue;
     const Eigen::Vector3d ab = pos[b] - pos[a];
     const double l2 = ab.squaredNorm();
     if (!(l2 > 0)) continue;
     const double t = std::clamp((pos[v] - pos[a]).dot(ab) / l2, 0.0, 1.0);
-    const Eigen::Vector3d on = pos[a] + t * ab;
-    const double r = fitted_radius[a] + t * (fitted_radius[b] - fitted_radius[a]);
+    Eigen::Vector3d on = pos[a] + t * ab;
+    double r = fitted_radius[a] + t * (fitted_radius[b] - fitted_radius[a]);
+    if (side && fitted_radius[b] <= kCoDominant * fitted_radius[a]) {
+      // The chord from a (on the stem's axis, below where the branch leaves) to b cuts the
+      // corner of the crotch; the branch's own axis runs straight on into the stem (TreeQSM's
+      // cylinders continue a branch to its parent). So v goes onto the line through b and the
+      // next fitted node out along the branch, at least a radius beyond b, no farther back
+      // from b than a is. Not at a fork of two stems of about the same thickness, where the
+      // heaviest child need not be the one that continues the stem below.
+      std::uint32_t c = b;
+      for (int k = 0; k < steps && !ch[c].empty(); ++k) {
+        c = heaviest(c);
+        if (fitted[c] && (pos[c] - pos[b]).norm() >= fitted_radius[b]) break;
+      }
+      if (c != b && fitted[c] && (pos[c] - pos[b]).norm() >= fitted_radius[b]) {
+        const Eigen::Vector3d back = (pos[b] - pos[c]).normalized();
+        on = pos[b] + std::clamp((pos[v] - pos[b]).dot(back), 0.0, std::sqrt(l2)) * back;
+        r = fitted_radius[b];
+      }
+    }
     if ((on - pos[v]).norm() > 1.5 * r + 2 * spacing) continue;
     moved.push_back(v), to.push_back(on), radius.push_back(r);
   }

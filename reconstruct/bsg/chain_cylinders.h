@@ -28,7 +28,9 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
 
 // A node neither a cross-section nor a cylinder placed (not a tip, hint at least `thin`) between
 // two fitted nodes, at most `steps` nodes up and down its heaviest child, moves onto the segment
-// between them when it lies within 1.5 x their radius (plus two spacings) of it. Run by
+// between them when it lies within 1.5 x their radius (plus two spacings) of it; where the way
+// down leaves the node's branch for the stem it grows from, onto the branch's own axis (through
+// the fitted node above and the next one out) instead. Run by
 // fit_chain_cylinders and again after the one-sided sections (one_sided_sections.h).
 std::size_t bridge_unfitted(std::vector<Eigen::Vector3d>& pos,
                             const std::vector<std::uint32_t>& parent,

@@ -9,6 +9,7 @@
 #include "backends/scanner/scanner.h"
 #include "core/rng.h"
 #include "reconstruct/bsg/centre_line.h"
+#include "reconstruct/bsg/chain_cylinders.h"
 #include "reconstruct/bsg/cylinder_fit.h"
 #include "tests/reconstruct/reconstruct_fixtures.h"
 #include "tests/support/harness.h"
@@ -106,4 +107,57 @@ TEST_CASE("chain cylinders: one station, limbs with twig-sized hints return to t
   CHECK(with <= 0.15);
   CHECK(without > 2 * with);
   CHECK(without > 2 * sections);
+}
+
+TEST_CASE("bridges: a side branch's unfitted base goes onto its own axis, not the crotch's chord",
+          "[centre_line]") {
+  // A stem up z (nodes 0-9, fitted but for the fork at node 2, which lies 5 cm off its axis) and a
+  // branch leaving the fork at 45 degrees (nodes 10-14, radius 10 cm): its first two nodes are
+  // on its bark, unfitted, as the BSG leaves them where the scan sees the crotch from one side.
+  const Eigen::Vector3d fork(0, 0, 2), d = Eigen::Vector3d(1, 0, 1).normalized(), bark(0, 0.08, 0);
+  std::vector<Eigen::Vector3d> pos;
+  std::vector<std::uint32_t> parent;
+  for (int i = 0; i < 10; ++i) pos.emplace_back(0, 0, i), parent.push_back(i ? i - 1 : bsg::kNone);
+  pos[2].x() = 0.05;
+  for (int i = 0; i < 5; ++i) {
+    pos.push_back(fork + 0.5 * (i + 1) * d + (i < 2 ? bark : Eigen::Vector3d::Zero()));
+    parent.push_back(i ? 10 + i - 1 : 2);
+  }
+  std::vector<double> hint(15, 0.3), radius(15, 0.3);
+  for (int i = 10; i < 15; ++i) hint[i] = radius[i] = 0.1;
+  std::vector<std::uint8_t> fitted(15, 1);
+  fitted[2] = fitted[10] = fitted[11] = 0;
+  const std::vector<Eigen::Vector3d> before = pos;
+  CHECK(bsg::bridge_unfitted(pos, parent, hint, fitted, radius, 0.01, 0.02) == 3);
+  // The fork, on the stem's own chain, goes onto the chord between the stem's fitted nodes.
+  CHECK((pos[2] - fork).norm() < 1e-9);
+  const auto off_axis = [&](const Eigen::Vector3d& p) {
+    const Eigen::Vector3d v = p - fork;
+    return (v - v.dot(d) * d).norm();
+  };
+  for (int v : {10, 11}) {
+    INFO("node " << v);
+    CHECK(fitted[v] == 1);
+    CHECK(radius[v] == 0.1);
+    CHECK(off_axis(pos[v]) < 1e-9);
+    CHECK((pos[v] - (fork + 0.5 * (v - 9) * d)).norm() < 1e-9);
+    // The chord from the stem's fitted node below the fork (node 1) to the branch's first fitted
+    // node cuts the crotch: a node projected onto it would lie 1.4-2.9 radii off the axis.
+    const Eigen::Vector3d a = before[1], ab = before[12] - a;
+    const Eigen::Vector3d chord = a + ((before[v] - a).dot(ab) / ab.squaredNorm()) * ab;
+    CHECK(off_axis(chord) > 1.4 * 0.1);
+  }
+  SECTION("a fork of two stems of about the same thickness keeps the chord") {
+    // Which child continues the stem below is not known there (the heaviest need not).
+    pos = before;
+    for (int i = 10; i < 15; ++i) radius[i] = 0.28;
+    fitted.assign(15, 1);
+    fitted[2] = fitted[10] = fitted[11] = 0;
+    CHECK(bsg::bridge_unfitted(pos, parent, hint, fitted, radius, 0.01, 0.02) == 3);
+    const Eigen::Vector3d a = before[1], ab = before[12] - a;
+    for (int v : {10, 11}) {
+      const double t = (before[v] - a).dot(ab) / ab.squaredNorm();
+      CHECK((pos[v] - (a + t * ab)).norm() < 1e-9);
+    }
+  }
 }
