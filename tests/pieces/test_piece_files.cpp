@@ -168,6 +168,22 @@ TEST_CASE("a glTF piece: triangle pairs become quads, node transforms are applie
   REQUIRE(o.lods[0].positions.size() == t.lods[0].positions.size());
   CHECK(distance(o.leaves[0].building.t, t.leaves[0].building.t) < 1e-5);
 
+  // The container is told by its magic, not by the name: the same model as a GLB (its JSON the
+  // only chunk, the buffer a data URI) in a file named .gltf reads the same.
+  std::string json = bent_gltf();
+  json.append((4 - json.size() % 4) % 4, ' ');
+  std::string glb = "glTF";
+  const auto u32 = [&](std::uint32_t v) {
+    for (int k = 0; k < 4; ++k) glb.push_back(char((v >> (8 * k)) & 0xff));
+  };
+  u32(2), u32(std::uint32_t(12 + 8 + json.size())), u32(std::uint32_t(json.size()));
+  u32(0x4E4F534A);  // "JSON"
+  glb += json;
+  fs::path binary = tmp.path / "binary.gltf";
+  std::ofstream(binary, std::ios::binary) << glb;
+  PieceType g = finish_piece(draft_mesh_file("Bent", binary.string()), {1});
+  CHECK(distance(o.leaves[0].building.t, g.leaves[0].building.t) < 1e-5);
+
   fs::path broken = tmp.path / "broken.gltf";
   std::ofstream(broken) << bent_gltf(true);
   CHECK_THROWS_WITH(draft_mesh_file("Bent", broken.string()),
