@@ -335,7 +335,10 @@ struct Decoder {
         for (std::size_t k = 0; k < nk; ++k) p.key.push_back(r.real("key"));
         for (std::size_t k = 0; k < nk; ++k) p.query.push_back(code_id(r, "query code"));
       }
+      const std::size_t alternatives_at = r.pos();
       const std::size_t na = r.count("alternatives", kMaxFile, 2);
+      // Every production the compiler writes has a successor; the derivation chooses among them.
+      if (na == 0) r.fail_at(alternatives_at, "expected at least one alternative");
       p.alt_begin = std::uint32_t(g.alternatives.size());
       for (std::size_t a = 0; a < na; ++a) {
         r.heading("alternative " + std::to_string(a));

@@ -2,6 +2,8 @@
 // crash: truncation at every length, each byte flipped at every offset, and -- behind a
 // checksum switched off -- structural damage the decoder must catch by itself.
 #include <catch2/catch.hpp>
+#include <fstream>
+#include <iterator>
 
 #include "compiler/expr_vm.h"
 #include "formats/rmb/rmb_codec.h"
@@ -116,4 +118,21 @@ TEST_CASE("rmb: errors name the offset and what was expected", "[rmb]") {
   bad = good;
   bad[4] = 3;  // version 3
   CHECK_THROWS_WITH(decode_rmb(bad), Catch::Contains("expected format version 1 or 2, found 3"));
+}
+
+TEST_CASE("rmb: a production without an alternative is refused at decoding", "[rmb]") {
+  // Found by fuzz_decode_rmb: the derivation's stochastic choice read the production's first
+  // alternative, past the end of the table.
+  std::ifstream in(std::string(RAMUS_SOURCE_DIR) +
+                       "/tests/fuzz/corpus/decode_rmb/regress_production_without_alternative.rmb",
+                   std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  REQUIRE(bytes.size() == 319);
+  try {
+    decode_rmb(bytes);
+    FAIL("accepted a production without an alternative");
+  } catch (const RmbError& e) {
+    CHECK(e.offset == 290);
+    CHECK(std::string(e.what()) == "byte 290: expected at least one alternative");
+  }
 }
