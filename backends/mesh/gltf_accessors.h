@@ -131,10 +131,7 @@ inline tinygltf::FsCallbacks checked_file_callbacks() {
 inline std::string load_model(tinygltf::TinyGLTF& loader, tinygltf::Model& model,
                               const std::string& path, const std::string& bytes,
                               const std::string& base) {
-  const auto ends_with = [&](const char* ext) {
-    return path.size() >= 4 && path.compare(path.size() - 4, 4, ext) == 0;
-  };
-  const bool binary = bytes.compare(0, 4, "glTF") == 0 || ends_with(".glb") || ends_with(".GLB");
+  const bool binary = bytes.starts_with("glTF") || path.ends_with(".glb") || path.ends_with(".GLB");
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
   if (binary) {
     if (std::string e = mesh::glb_layout_error(data, bytes.size()); !e.empty()) {

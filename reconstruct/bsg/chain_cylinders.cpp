@@ -143,11 +143,12 @@ std::size_t bridge_unfitted(std::vector<Eigen::Vector3d>& pos,
       // from b than a is. Not at a fork of two stems of about the same thickness, where the
       // heaviest child need not be the one that continues the stem below.
       std::uint32_t c = b;
-      for (int k = 0; k < steps && !ch[c].empty(); ++k) {
+      bool found = false;
+      for (int k = 0; k < steps && !found && !ch[c].empty(); ++k) {
         c = heaviest(c);
-        if (fitted[c] && (pos[c] - pos[b]).norm() >= fitted_radius[b]) break;
+        found = fitted[c] && (pos[c] - pos[b]).norm() >= fitted_radius[b];
       }
-      if (c != b && fitted[c] && (pos[c] - pos[b]).norm() >= fitted_radius[b]) {
+      if (found) {
         const Eigen::Vector3d back = (pos[b] - pos[c]).normalized();
         on = pos[b] + std::clamp((pos[v] - pos[b]).dot(back), 0.0, std::sqrt(l2)) * back;
         r = fitted_radius[b];
