@@ -59,10 +59,21 @@ namespace {
 // cos 15 degrees: directions this close cut a stem in nearly the same slab.
 constexpr double kSameDirection = 0.966;
 
+// 1/sqrt(2): the radius of either child of a fork of two equal children in the pipe model
+// (Livny et al. 2010, 4.3). A stem that goes on through a node keeps at least this share of the
+// radius below it.
+constexpr double kPipeChild = 0.70710678118654752;
+
 struct SlabFit {
   bool ok = false;
   Eigen::Vector3d axis_point;
   double radius = 0;
+  // Where no circle fits the whole slab but its points fall into separate groups (two limbs
+  // side by side after their fork, each seen on one side): the circle of the group the node
+  // belongs to, which centre_line takes if it continues the stem below.
+  bool own_ok = false;
+  Eigen::Vector3d own_point;
+  double own_radius = 0;
 };
 
 // The local branch direction at v: from two nodes up to two nodes down the heaviest child (the
@@ -82,6 +93,38 @@ Eigen::Vector3d direction_at(std::uint32_t v, const std::vector<Eigen::Vector3d>
   return d.normalized();
 }
 
+// Labels the points by connected group (points closer than `link` chain together; each point's
+// label is the first index of its group) and returns the number of groups. A sweep along the
+// first coordinate compares only points less than `link` apart in it.
+int group_points(const std::vector<Eigen::Vector2d>& pts, double link,
+                 std::vector<std::uint32_t>& label) {
+  const std::uint32_t m = std::uint32_t(pts.size());
+  thread_local std::vector<std::uint32_t> by_x;
+  by_x.resize(m);
+  label.resize(m);
+  for (std::uint32_t i = 0; i < m; ++i) label[i] = by_x[i] = i;
+  std::sort(by_x.begin(), by_x.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return pts[a].x() < pts[b].x() || (pts[a].x() == pts[b].x() && a < b);
+  });
+  auto root = [&](std::uint32_t i) {
+    while (label[i] != i) i = label[i] = label[label[i]];
+    return i;
+  };
+  const double l2 = link * link;
+  for (std::uint32_t k = 0; k < m; ++k) {
+    const std::uint32_t i = by_x[k];
+    for (std::uint32_t q = k + 1; q < m && pts[by_x[q]].x() - pts[i].x() <= link; ++q) {
+      const std::uint32_t j = by_x[q];
+      if ((pts[i] - pts[j]).squaredNorm() > l2) continue;
+      const std::uint32_t a = root(i), b = root(j);
+      if (a != b) label[std::max(a, b)] = std::min(a, b);  // the smaller index stays the root
+    }
+  }
+  int groups = 0;
+  for (std::uint32_t i = 0; i < m; ++i) groups += (label[i] = root(i)) == i;
+  return groups;
+}
+
 // Fits the cross-section at `x` (direction d). The search disc grows when the circle reaches
 // beyond it: a node on the bark of a stem thicker than its radius hint sees only part of it.
 SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint,
@@ -97,6 +140,9 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
   thread_local std::vector<std::uint32_t> near;
   thread_local std::vector<Eigen::Vector2d> pts;
   thread_local std::vector<double> w;
+  thread_local std::vector<std::uint32_t> label;
+  thread_local std::vector<Eigen::Vector2d> group_pts;
+  thread_local std::vector<double> group_w;
   double thicken = 1;  // a sparse slab (a thin branch far from the scanner) is taken thicker once
   for (int attempt = 0; attempt < 4; ++attempt) {
     const double reach = std::max(2.5 * r0, 5 * p.spacing);
@@ -108,22 +154,55 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
     }
     if (pts.size() < 8) return out;
     thin_slab(pts, w, p.max_slab_points);
+    // A circle is a stem's cross-section when it is a plausible size and its inliers cover
+    // enough arc closely, around a centre not too far from the node.
+    auto good = [&](const CircleFit& f, double within) {
+      return f.valid && f.radius <= p.max_hint_factor * std::max(hint, 2 * p.spacing) &&
+             f.coverage >= p.min_coverage && f.inlier_fraction >= p.min_inliers &&
+             f.residual <= p.max_residual * f.radius + noise && f.radius >= p.spacing &&
+             f.centre.norm() + f.radius <= within &&
+             f.centre.norm() <= p.max_shift * f.radius + 2 * p.spacing;
+    };
     const CircleFit f = fit_circle(pts, w, noise);
-    if (!f.valid) return out;
-    const double extent = f.centre.norm() + f.radius;
     // A radius far above the hint is a flat arc (a scan's edge, a wall of twigs), not a stem.
-    if (f.radius > p.max_hint_factor * std::max(hint, 2 * p.spacing)) return out;
-    if (extent > 0.9 * reach && attempt < 3) {
+    const bool stem = f.valid && f.radius <= p.max_hint_factor * std::max(hint, 2 * p.spacing);
+    if (stem && f.centre.norm() + f.radius > 0.9 * reach && attempt < 3) {
       r0 = std::min(2 * r0, 1.3 * std::max(f.radius, f.centre.norm()));
       continue;
     }
-    const bool good = f.coverage >= p.min_coverage && f.inlier_fraction >= p.min_inliers &&
-                      f.residual <= p.max_residual * f.radius + noise && f.radius >= p.spacing &&
-                      extent <= reach && f.centre.norm() <= p.max_shift * f.radius + 2 * p.spacing;
-    if (!good) return out;
-    out.ok = true;
-    out.axis_point = x + f.centre.x() * e1 + f.centre.y() * e2;
-    out.radius = f.radius;
+    if (good(f, reach)) {
+      out.ok = true;
+      out.axis_point = x + f.centre.x() * e1 + f.centre.y() * e2;
+      out.radius = f.radius;
+      return out;
+    }
+    // No circle fits the slab. Where its points fall into groups, told apart by gaps wider than
+    // half the radius the disc is sized for (the bark of one stem is continuous at the scan's
+    // spacing, and a twig's shadow on it is narrower), one group may be the node's own stem.
+    // Only for stems of at least three spacings: thinner ones show no arcs to fit apart, and a
+    // sparse scan's slabs fall into groups of a few points that cost fits and give none.
+    if (!p.separate_stems || hint < 3 * p.spacing ||
+        group_points(pts, std::max(3 * p.spacing, 0.5 * r0), label) < 2)
+      return out;
+    // The group whose circle lies nearest the node (distance to its disc; the node starts on the
+    // bark of its stem), the larger circle of two that hold the node.
+    double best = 0;
+    for (std::uint32_t g = 0; g < pts.size(); ++g) {
+      if (label[g] != g) continue;
+      group_pts.clear(), group_w.clear();
+      for (std::size_t i = g; i < pts.size(); ++i) {
+        if (label[i] == g) group_pts.push_back(pts[i]), group_w.push_back(w[i]);
+      }
+      if (group_pts.size() < 8) continue;
+      const CircleFit c = fit_circle(group_pts, group_w, noise);
+      // Within 0.9 of the disc: a circle that reaches its edge may be cut off by it.
+      if (!good(c, 0.9 * reach)) continue;
+      const double off = std::max(c.centre.norm() - c.radius, 0.0);
+      if (out.own_ok && (off > best || (off == best && c.radius <= out.own_radius))) continue;
+      out.own_ok = true, best = off;
+      out.own_point = x + c.centre.x() * e1 + c.centre.y() * e2;
+      out.own_radius = c.radius;
+    }
     return out;
   }
   return out;
@@ -214,6 +293,14 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
       const double ra = u == kNone ? 0.0 : (fits[u].ok ? fits[u].radius : ancestor[u]);
       if (fits[v].ok && ra > 0 && fits[v].radius > p.max_growth * ra + p.spacing)
         fits[v].ok = false;
+      // The slab found no stem, but one of its groups is a circle that continues the stem
+      // below: the limb the node belongs to, beside another. Its radius is between the pipe
+      // model's bounds, so that a twig's circle does not stand for a stem, nor do groups thicken
+      // a stem step by step.
+      const SlabFit& f = fits[v];
+      if (!f.ok && f.own_ok && ra > 0 && f.own_radius >= kPipeChild * ra && f.own_radius <= ra) {
+        fits[v].ok = true, fits[v].axis_point = f.own_point, fits[v].radius = f.own_radius;
+      }
       ancestor[v] = ra;
     }
     for (std::size_t v = 0; v < n; ++v) pos[v] = fits[v].ok ? fits[v].axis_point : original[v];

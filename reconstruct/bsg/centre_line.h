@@ -43,6 +43,9 @@ struct CentreLineParams {
   // A node moves at most this many fitted radii (plus two spacings): it lies on the bark or
   // near it, and a farther circle is another branch's.
   double max_shift = 1.75;
+  // A slab that no circle fits but whose points fall into separate groups (two limbs side by
+  // side after a fork) is fitted again with the group nearest the node alone.
+  bool separate_stems = true;
   // Unfitted nodes that continue a fitted stem are fitted again across that stem's axis.
   bool continuation_fits = true;
   // Chains with unfitted nodes get cylinders fitted along them (chain_cylinders.h).

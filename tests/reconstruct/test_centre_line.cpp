@@ -255,3 +255,73 @@ TEST_CASE("centre line: a copy of the trunk hung from a limb's base goes, a twig
   CHECK(b.pos.back().isApprox(Eigen::Vector3d(0.6, 0, 2.4)));
   CHECK(b.parent[8] == limb);  // the survivor's first node, renumbered after the removal
 }
+
+// Two limbs (radius 0.15, tapering) leave a stem (radius 0.2) side by side, 0.4 m apart, and are
+// scanned from one side; the skeleton's chain runs up between them, as the shortest paths of a
+// BSG that merged the two do. No circle fits a slab across both; the group of points nearest each
+// node does, and it continues the stem below (pipe model: between 0.71 and 1 x 0.2).
+namespace {
+
+struct TwoLimbResult {
+  std::size_t fitted = 0;   // chain nodes between the limbs that were fitted
+  double worst = 0;         // the farthest of them from the nearer limb's axis
+  std::size_t on_limb = 0;  // chain nodes within 0.15 x the radius of that axis
+};
+
+TwoLimbResult centre_two_limbs(bool separate) {
+  const double r_stem = 0.2, r_limb = 0.15, x_limb = 0.35;
+  Rng rng(23);
+  std::vector<Eigen::Vector3d> bark;
+  // Limbs taper by a fifth over their length, as branches do.
+  auto half_seen = [&](double cx, double r, double z0, double z1, int n) {
+    for (int i = 0; i < n; ++i) {
+      const double a = rng.uniform(M_PI, 2 * M_PI), z = rng.uniform(z0, z1);
+      const double rr = r * (1 - 0.2 * (z - z0) / (z1 - z0)) + rng.normal(0, 0.003);
+      bark.emplace_back(cx + rr * std::cos(a), rr * std::sin(a), z);
+    }
+  };
+  half_seen(0, r_stem, 0, 1, 15000);
+  half_seen(-x_limb, r_limb, 1, 2.5, 15000);
+  half_seen(x_limb, r_limb, 1, 2.5, 15000);
+  std::vector<Eigen::Vector3d> pos;
+  std::vector<std::uint32_t> parent;
+  std::vector<double> hint;
+  for (int k = 0; k < 24; ++k) {
+    const double z = 0.1 + 0.1 * k;
+    // On the stem's bark, then between the limbs, nearer the right one.
+    pos.push_back(z < 1 ? Eigen::Vector3d(0, -r_stem, z) : Eigen::Vector3d(x_limb - 0.2, -0.12, z));
+    parent.push_back(k == 0 ? bsg::kNone : std::uint32_t(k - 1));
+    hint.push_back(r_stem);
+  }
+  bsg::CentreLineParams p;
+  p.spacing = 0.01;
+  p.separate_stems = separate;
+  p.chain_cylinders = false;  // the slabs alone
+  p.one_sided_sections = false;
+  const bsg::PointIndex index(bark);
+  const bsg::CentreLineResult fit = bsg::centre_line(pos, parent, hint, bark, index, {}, p);
+  TwoLimbResult out;
+  for (std::size_t v = 0; v < pos.size(); ++v) {
+    if (pos[v].z() < 1.15 || pos[v].z() > 2.35) continue;  // the slabs that see both limbs whole
+    const double off = std::min(std::hypot(pos[v].x() - x_limb, pos[v].y()),
+                                std::hypot(pos[v].x() + x_limb, pos[v].y()));
+    out.on_limb += off <= 0.15 * r_limb;
+    if (!fit.fitted[v]) continue;
+    ++out.fitted;
+    out.worst = std::max(out.worst, off);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST_CASE("centre line: a chain between two limbs side by side goes onto the nearer limb's axis",
+          "[centre_line]") {
+  const TwoLimbResult with = centre_two_limbs(true), without = centre_two_limbs(false);
+  INFO("fitted " << with.fitted << " (without " << without.fitted << "), on a limb's axis "
+                 << with.on_limb << " (without " << without.on_limb << "), farthest "
+                 << with.worst);
+  CHECK(with.on_limb >= 8);  // of 12 (measured: 12)
+  CHECK(without.on_limb == 0);
+  CHECK(with.worst <= 0.2 * 0.15);
+}

@@ -57,7 +57,7 @@ double segment_distance(const Vec3& p, const Vec3& a, const Vec3& b) {
 // Median distance / radius of the nodes of radius >= 5 cm from the truth's axis (its nearest
 // segment), after moving them onto the bark towards a single station with twig-sized hints and
 // re-centring against that station's scan.
-double one_station_limbs(bool chain_cylinders, bool one_sided_sections) {
+double one_station_limbs(bool chain_cylinders, bool one_sided_sections, bool separate_stems) {
   const Skeleton truth = test::thick_tree(5, 8.0, 0.3);
   scanner::ScanOptions so;
   so.from = scanner::stations_around(truth, 1);
@@ -78,6 +78,7 @@ double one_station_limbs(bool chain_cylinders, bool one_sided_sections) {
   p.spacing = 1 / std::sqrt(so.density);
   p.chain_cylinders = chain_cylinders;
   p.one_sided_sections = one_sided_sections;
+  p.separate_stems = separate_stems;
   bsg::centre_skeleton(moved, points, p);
   std::vector<double> rel;
   for (std::size_t i = 0; i < truth.size(); ++i) {
@@ -98,10 +99,13 @@ double one_station_limbs(bool chain_cylinders, bool one_sided_sections) {
 
 TEST_CASE("chain cylinders: one station, limbs with twig-sized hints return to their axes",
           "[centre_line]") {
-  const double with = one_station_limbs(true, true), without = one_station_limbs(false, false);
+  // "Without": cross-sections of whole slabs only (no chain cylinders, no one-sided sections, no
+  // slabs split into groups).
+  const double with = one_station_limbs(true, true, true),
+               without = one_station_limbs(false, false, false);
   // The one-sided sections (one_sided_sections.h) without the cylinders: the limbs' radii come
   // from the nodes the cross-sections fitted, and their half-seen arcs then fix the axis.
-  const double sections = one_station_limbs(false, true);
+  const double sections = one_station_limbs(false, true, false);
   INFO("median error / radius with chain cylinders " << with << ", cross-sections only " << without
                                                      << ", with one-sided sections " << sections);
   CHECK(with <= 0.15);
