@@ -79,6 +79,7 @@ class Printer {
     out_ += std::string(2 * indent, ' ') + trimmed(c.text) + "\n";
     prev_end_ = c.span.end;
     if (is_line_comment(c)) line_comment_end_ = out_.size();
+    comment_line_end_ = out_.size();
   }
 
   static bool is_line_comment(const ast::Comment& c) { return c.text.rfind("//", 0) == 0; }
@@ -106,14 +107,16 @@ class Printer {
     while (next_ < file_.comments.size() && file_.comments[next_].span.begin < limit &&
            same_line(end, file_.comments[next_].span.begin)) {
       const ast::Comment& c = file_.comments[next_++];
-      if (out_.size() == line_comment_end_) {
+      if (out_.size() == line_comment_end_ || out_.size() == comment_line_end_) {
         // The line just printed ends in a `//` comment (a comment moved before the code's end,
         // such as one after a rule's last alternative when its `;` follows on the next line):
-        // appended, this comment would become part of that one. It gets a line of its own, at
-        // that line's indentation.
+        // appended, this comment would become part of that one. Or it is a comment moved there
+        // on a line of its own, which the next run keeps on its own line, apart from this one.
+        // Either way this comment gets a line of its own, at that line's indentation.
         const std::size_t start = out_.rfind('\n', out_.size() - 2) + 1;  // npos + 1 == 0
         const std::size_t indent = out_.find_first_not_of(' ', start) - start;
         out_ += std::string(indent, ' ') + trimmed(c.text) + "\n";
+        comment_line_end_ = out_.size();
       } else {
         out_.pop_back();  // the newline
         out_ += (any ? " " : "  ") + trimmed(c.text) + "\n";
@@ -251,6 +254,8 @@ class Printer {
   // The size of out_ right after a line that ends in a `//` comment (nothing may follow it on
   // that line); npos when no such line was printed.
   std::size_t line_comment_end_ = std::string::npos;
+  // Where the last line that holds only comments ends in out_ (npos: none yet).
+  std::size_t comment_line_end_ = std::string::npos;
   bool hoisted_first_ = true;  // no blank line before a moved comment
 };
 
