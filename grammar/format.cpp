@@ -78,8 +78,7 @@ class Printer {
   void comment_line(const ast::Comment& c, int indent) {
     out_ += std::string(2 * indent, ' ') + trimmed(c.text) + "\n";
     prev_end_ = c.span.end;
-    if (is_line_comment(c)) line_comment_end_ = out_.size();
-    comment_line_end_ = out_.size();
+    closed_line_end_ = out_.size();
   }
 
   static bool is_line_comment(const ast::Comment& c) { return c.text.rfind("//", 0) == 0; }
@@ -107,7 +106,7 @@ class Printer {
     while (next_ < file_.comments.size() && file_.comments[next_].span.begin < limit &&
            same_line(end, file_.comments[next_].span.begin)) {
       const ast::Comment& c = file_.comments[next_++];
-      if (out_.size() == line_comment_end_ || out_.size() == comment_line_end_) {
+      if (out_.size() == closed_line_end_) {
         // The line just printed ends in a `//` comment (a comment moved before the code's end,
         // such as one after a rule's last alternative when its `;` follows on the next line):
         // appended, this comment would become part of that one. Or it is a comment moved there
@@ -116,12 +115,12 @@ class Printer {
         const std::size_t start = out_.rfind('\n', out_.size() - 2) + 1;  // npos + 1 == 0
         const std::size_t indent = out_.find_first_not_of(' ', start) - start;
         out_ += std::string(indent, ' ') + trimmed(c.text) + "\n";
-        comment_line_end_ = out_.size();
+        closed_line_end_ = out_.size();
       } else {
         out_.pop_back();  // the newline
         out_ += (any ? " " : "  ") + trimmed(c.text) + "\n";
+        if (is_line_comment(c)) closed_line_end_ = out_.size();
       }
-      if (is_line_comment(c)) line_comment_end_ = out_.size();
       end = prev_end_ = c.span.end;
       any = true;
     }
@@ -251,11 +250,10 @@ class Printer {
   std::string out_;
   std::size_t next_ = 0;        // the next comment to place
   std::uint32_t prev_end_ = 0;  // where the last placed code or comment ends in the source
-  // The size of out_ right after a line that ends in a `//` comment (nothing may follow it on
-  // that line); npos when no such line was printed.
-  std::size_t line_comment_end_ = std::string::npos;
-  // Where the last line that holds only comments ends in out_ (npos: none yet).
-  std::size_t comment_line_end_ = std::string::npos;
+  // The size of out_ right after the last line to which no comment may be appended: one that
+  // ends in a `//` comment (an appended comment would become part of it), or one that holds only
+  // comments (the next run keeps those on a line of their own); npos when none was printed.
+  std::size_t closed_line_end_ = std::string::npos;
   bool hoisted_first_ = true;  // no blank line before a moved comment
 };
 
