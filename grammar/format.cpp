@@ -78,7 +78,7 @@ class Printer {
   void comment_line(const ast::Comment& c, int indent) {
     out_ += std::string(2 * indent, ' ') + trimmed(c.text) + "\n";
     prev_end_ = c.span.end;
-    closed_line_end_ = out_.size();
+    closed_line_end_ = out_.size(), closed_line_indent_ = std::size_t(2 * indent);
   }
 
   static bool is_line_comment(const ast::Comment& c) { return c.text.rfind("//", 0) == 0; }
@@ -111,15 +111,18 @@ class Printer {
         // such as one after a rule's last alternative when its `;` follows on the next line):
         // appended, this comment would become part of that one. Or it is a comment moved there
         // on a line of its own, which the next run keeps on its own line, apart from this one.
-        // Either way this comment gets a line of its own, at that line's indentation.
-        const std::size_t start = out_.rfind('\n', out_.size() - 2) + 1;  // npos + 1 == 0
-        const std::size_t indent = out_.find_first_not_of(' ', start) - start;
-        out_ += std::string(indent, ' ') + trimmed(c.text) + "\n";
+        // Either way this comment gets a line of its own, at that line's indentation (where a
+        // block comment over several lines starts, not its last line's).
+        out_ += std::string(closed_line_indent_, ' ') + trimmed(c.text) + "\n";
         closed_line_end_ = out_.size();
       } else {
         out_.pop_back();  // the newline
         out_ += (any ? " " : "  ") + trimmed(c.text) + "\n";
-        if (is_line_comment(c)) closed_line_end_ = out_.size();
+        if (is_line_comment(c)) {
+          const std::size_t start = out_.rfind('\n', out_.size() - 2) + 1;  // npos + 1 == 0
+          closed_line_end_ = out_.size();
+          closed_line_indent_ = out_.find_first_not_of(' ', start) - start;
+        }
       }
       end = prev_end_ = c.span.end;
       any = true;
@@ -254,7 +257,8 @@ class Printer {
   // ends in a `//` comment (an appended comment would become part of it), or one that holds only
   // comments (the next run keeps those on a line of their own); npos when none was printed.
   std::size_t closed_line_end_ = std::string::npos;
-  bool hoisted_first_ = true;  // no blank line before a moved comment
+  std::size_t closed_line_indent_ = 0;  // the indentation that line starts with
+  bool hoisted_first_ = true;           // no blank line before a moved comment
 };
 
 }  // namespace
