@@ -74,6 +74,7 @@ struct SlabFit {
   bool own_ok = false;
   Eigen::Vector3d own_point;
   double own_radius = 0;
+  bool own_from_arcs = false;  // the own circle is one of two touching arcs (split_two_arcs)
 };
 
 // The local branch direction at v: from two nodes up to two nodes down the heaviest child (the
@@ -181,27 +182,35 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
     // spacing, and a twig's shadow on it is narrower), one group may be the node's own stem.
     // Only for stems of at least three spacings: thinner ones show no arcs to fit apart, and a
     // sparse scan's slabs fall into groups of a few points that cost fits and give none.
-    if (!p.separate_stems || hint < 3 * p.spacing ||
-        group_points(pts, std::max(3 * p.spacing, 0.5 * r0), label) < 2)
-      return out;
-    // The group whose circle lies nearest the node (distance to its disc; the node starts on the
-    // bark of its stem), the larger circle of two that hold the node.
+    if (!p.separate_stems || hint < 3 * p.spacing) return out;
+    // The circle nearest the node (distance to its disc; the node starts on the bark of its
+    // stem), the larger of two that hold the node. Within 0.9 of the disc: a circle that reaches
+    // its edge may be cut off by it.
     double best = 0;
-    for (std::uint32_t g = 0; g < pts.size(); ++g) {
-      if (label[g] != g) continue;
-      group_pts.clear(), group_w.clear();
-      for (std::size_t i = g; i < pts.size(); ++i) {
-        if (label[i] == g) group_pts.push_back(pts[i]), group_w.push_back(w[i]);
-      }
-      if (group_pts.size() < 8) continue;
-      const CircleFit c = fit_circle(group_pts, group_w, noise);
-      // Within 0.9 of the disc: a circle that reaches its edge may be cut off by it.
-      if (!good(c, 0.9 * reach)) continue;
+    auto consider = [&](const CircleFit& c) {
+      if (!good(c, 0.9 * reach)) return;
       const double off = std::max(c.centre.norm() - c.radius, 0.0);
-      if (out.own_ok && (off > best || (off == best && c.radius <= out.own_radius))) continue;
+      if (out.own_ok && (off > best || (off == best && c.radius <= out.own_radius))) return;
       out.own_ok = true, best = off;
       out.own_point = x + c.centre.x() * e1 + c.centre.y() * e2;
       out.own_radius = c.radius;
+    };
+    if (group_points(pts, std::max(3 * p.spacing, 0.5 * r0), label) >= 2) {
+      for (std::uint32_t g = 0; g < pts.size(); ++g) {
+        if (label[g] != g) continue;
+        group_pts.clear(), group_w.clear();
+        for (std::size_t i = g; i < pts.size(); ++i) {
+          if (label[i] == g) group_pts.push_back(pts[i]), group_w.push_back(w[i]);
+        }
+        if (group_pts.size() >= 8) consider(fit_circle(group_pts, group_w, noise));
+      }
+    }
+    // No group is a stem: the limbs' arcs may touch (just after their fork), so that no gap
+    // parts them; split where one arc ends.
+    CircleFit a, b;
+    if (!out.own_ok && p.split_arcs && split_two_arcs(pts, w, f, noise, a, b)) {
+      consider(a), consider(b);
+      out.own_from_arcs = out.own_ok;
     }
     return out;
   }
@@ -288,6 +297,7 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
     });
     // Plausibility along the branches, parents first: no thickening outwards.
     std::vector<double> ancestor(n, 0.0);  // radius of the nearest accepted ancestor (0: none)
+    std::vector<std::uint32_t> fitted_below(n, kNone);  // the nearest accepted node, v or down
     for (std::uint32_t v : order) {
       const std::uint32_t u = parent[v] < n ? parent[v] : kNone;
       const double ra = u == kNone ? 0.0 : (fits[u].ok ? fits[u].radius : ancestor[u]);
@@ -297,11 +307,29 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
       // below: the limb the node belongs to, beside another. Its radius is between the pipe
       // model's bounds, so that a twig's circle does not stand for a stem, nor do groups thicken
       // a stem step by step.
+      // A circle of two touching arcs must also continue the axis below (within its radius of
+      // the line through the two nearest fitted nodes down): next to a fork the node may lie on
+      // the bark between both limbs, nearer the other one.
       const SlabFit& f = fits[v];
-      if (!f.ok && f.own_ok && ra > 0 && f.own_radius >= kPipeChild * ra && f.own_radius <= ra) {
+      bool continues = true;
+      if (!f.ok && f.own_ok && f.own_from_arcs && u != kNone) {
+        const std::uint32_t a = fitted_below[u];
+        const std::uint32_t b = a != kNone && parent[a] < n ? fitted_below[parent[a]] : kNone;
+        if (b != kNone) {
+          const Eigen::Vector3d axis = fits[a].axis_point - fits[b].axis_point;
+          const Eigen::Vector3d q = f.own_point - fits[b].axis_point;
+          if (axis.squaredNorm() > 0) {
+            const Eigen::Vector3d off = q - axis * (q.dot(axis) / axis.squaredNorm());
+            continues = off.norm() <= ra + p.spacing;
+          }
+        }
+      }
+      if (!f.ok && f.own_ok && continues && ra > 0 && f.own_radius >= kPipeChild * ra &&
+          f.own_radius <= ra) {
         fits[v].ok = true, fits[v].axis_point = f.own_point, fits[v].radius = f.own_radius;
       }
       ancestor[v] = ra;
+      fitted_below[v] = fits[v].ok ? v : (u == kNone ? kNone : fitted_below[u]);
     }
     for (std::size_t v = 0; v < n; ++v) pos[v] = fits[v].ok ? fits[v].axis_point : original[v];
     repair_forks();

@@ -46,6 +46,10 @@ struct CentreLineParams {
   // A slab that no circle fits but whose points fall into separate groups (two limbs side by
   // side after a fork) is fitted again with the group nearest the node alone.
   bool separate_stems = true;
+  // ... and where no gap parts the two limbs' arcs, the slab's points are split into two arcs
+  // (circle_fit.h, split_two_arcs) and the node takes the circle of the nearer one when it
+  // continues the axis of the stem below.
+  bool split_arcs = true;
   // Unfitted nodes that continue a fitted stem are fitted again across that stem's axis.
   bool continuation_fits = true;
   // Chains with unfitted nodes get cylinders fitted along them (chain_cylinders.h).

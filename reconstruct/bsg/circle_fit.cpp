@@ -341,4 +341,87 @@ CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<
   return f;
 }
 
+namespace {
+
+// The work space of split_two_arcs (fit_circle has its own, which the sides' fits use).
+struct SplitScratch {
+  std::vector<std::uint32_t> order;
+  std::vector<double> angle, distance, side_w;
+  std::vector<Eigen::Vector2d> side;
+};
+thread_local SplitScratch split_scratch;
+
+// The median distance of the points order[a, b) to the circle (c, r).
+double median_distance(const std::vector<Eigen::Vector2d>& pts, std::size_t a, std::size_t b,
+                       const Eigen::Vector2d& c, double r) {
+  std::vector<double>& d = split_scratch.distance;
+  d.clear();
+  for (std::size_t k = a; k < b; ++k) {
+    d.push_back(std::abs((pts[split_scratch.order[k]] - c).norm() - r));
+  }
+  return kth_smallest(d.data(), d.size(), d.size() / 2);
+}
+
+// The points order[a, b) and their weights, for a side's fit.
+void gather_side(const std::vector<Eigen::Vector2d>& pts, const std::vector<double>& weights,
+                 std::size_t a, std::size_t b) {
+  SplitScratch& s = split_scratch;
+  s.side.clear(), s.side_w.clear();
+  for (std::size_t k = a; k < b; ++k) {
+    s.side.push_back(pts[s.order[k]]), s.side_w.push_back(weight_of(weights, s.order[k]));
+  }
+}
+
+}  // namespace
+
+bool split_two_arcs(const std::vector<Eigen::Vector2d>& pts, const std::vector<double>& weights,
+                    const CircleFit& whole, double noise, CircleFit& first, CircleFit& second) {
+  // Each side needs 8 points, as a slab does (centre_line.cpp, fit_slab).
+  constexpr std::size_t kMinSide = 8;
+  constexpr int kSplits = 16;
+  const std::size_t m = pts.size();
+  if (!whole.valid || m < 2 * kMinSide) return false;
+  SplitScratch& s = split_scratch;
+  s.order.resize(m), s.angle.resize(m);
+  for (std::size_t i = 0; i < m; ++i) {
+    s.order[i] = std::uint32_t(i);
+    s.angle[i] = std::atan2(pts[i].y() - whole.centre.y(), pts[i].x() - whole.centre.x());
+  }
+  std::sort(s.order.begin(), s.order.end(), [&](std::uint32_t a, std::uint32_t b) {
+    return s.angle[a] < s.angle[b] || (s.angle[a] == s.angle[b] && a < b);
+  });
+  // The order starts after the widest angular gap, so that neither arc is cut in two by the
+  // wrap-around at -pi.
+  std::size_t start = 0;
+  double widest = s.angle[s.order[0]] + 2 * M_PI - s.angle[s.order[m - 1]];
+  for (std::size_t k = 1; k < m; ++k) {
+    const double gap = s.angle[s.order[k]] - s.angle[s.order[k - 1]];
+    if (gap > widest) widest = gap, start = k;
+  }
+  std::rotate(s.order.begin(), s.order.begin() + std::ptrdiff_t(start), s.order.end());
+  const double one = median_distance(pts, 0, m, whole.centre, whole.radius);
+  if (!(one > 2 * noise)) return false;
+  double best_cost = 0;
+  std::size_t best_k = 0;
+  for (int i = 1; i < kSplits; ++i) {
+    const std::size_t k = m * std::size_t(i) / kSplits;
+    if (k < kMinSide || m - k < kMinSide) continue;
+    gather_side(pts, weights, 0, k);
+    const CircleFit a = taubin_circle(s.side, s.side_w);
+    gather_side(pts, weights, k, m);
+    const CircleFit b = taubin_circle(s.side, s.side_w);
+    if (!a.valid || !b.valid) continue;
+    const double cost = (median_distance(pts, 0, k, a.centre, a.radius) * double(k) +
+                         median_distance(pts, k, m, b.centre, b.radius) * double(m - k)) /
+                        double(m);
+    if (best_k == 0 || cost < best_cost) best_cost = cost, best_k = k;
+  }
+  if (best_k == 0 || !(best_cost < 0.5 * one)) return false;
+  gather_side(pts, weights, 0, best_k);
+  first = fit_circle(s.side, s.side_w, noise);
+  gather_side(pts, weights, best_k, m);
+  second = fit_circle(s.side, s.side_w, noise);
+  return true;
+}
+
 }  // namespace ramus::bsg

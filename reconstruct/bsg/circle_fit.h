@@ -48,4 +48,16 @@ CircleFit taubin_circle(const std::vector<Eigen::Vector2d>& pts,
 CircleFit fit_circle(const std::vector<Eigen::Vector2d>& pts, const std::vector<double>& weights,
                      double noise, int iterations = 12);
 
+// Two circles for points on two arcs that touch: a slab across two limbs just after their fork,
+// each limb seen on one side, where no gap parts the arcs and one circle fitted to all of them
+// (`whole`) lies between the limbs. Ordered by angle around whole's centre, the points of one
+// arc come before those of the other; the split is tried at every sixteenth of the points, each
+// side fitted algebraically (Taubin), and the split whose circles lie nearest their points (the
+// sum over both sides of the median distance, per point) is taken when that is below half the
+// median distance to `whole`, and `whole` misses its points by more than twice the noise (a
+// single stem's arc is fitted about as well by one circle as by two). Returns false when no
+// split is taken; else the robust fits (fit_circle) of the two sides.
+bool split_two_arcs(const std::vector<Eigen::Vector2d>& pts, const std::vector<double>& weights,
+                    const CircleFit& whole, double noise, CircleFit& first, CircleFit& second);
+
 }  // namespace ramus::bsg
