@@ -301,7 +301,7 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
     for (std::uint32_t v : order) {
       const std::uint32_t u = parent[v] < n ? parent[v] : kNone;
       const double ra = u == kNone ? 0.0 : (fits[u].ok ? fits[u].radius : ancestor[u]);
-      if (fits[v].ok && ra > 0 && fits[v].radius > p.max_growth * ra + p.spacing)
+      if (fits[v].ok && ra > 0 && fits[v].radius > p.max_section_growth * ra + p.spacing)
         fits[v].ok = false;
       // The slab found no stem, but one of its groups is a circle that continues the stem
       // below: the limb the node belongs to, beside another. Its radius is between the pipe

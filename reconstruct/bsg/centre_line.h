@@ -32,7 +32,14 @@ struct CentreLineParams {
   double max_residual = 0.2;
   double min_inliers = 0.5;  // ... at least this share of the slab's points are inliers ...
   // ... and the radius is at most this factor above the nearest fitted ancestor's (a branch does
-  // not thicken outwards; a slab that cuts its parent's stem near a fork does).
+  // not thicken outwards; a slab that cuts its parent's stem near a fork, or two limbs pressed
+  // together after it, does). Chosen over the harness trees turned to six azimuths: 1.3 let
+  // such circles through; below 1.13 the weeping tree's leader left its axis at a fork
+  // (docs/reconstruction.md, Centre lines, step 4).
+  double max_section_growth = 1.15;
+  // The same bound for the continuation fits (cut across the axis of the fitted stem below) and,
+  // against the thickest cross-section, for the chain cylinders: the tighter bound measured
+  // worse there.
   double max_growth = 1.3;
   // ... and at most this factor above the radius hint (allometric radii are off by 2-3 x; a
   // nearly straight arc fits any huge circle).

@@ -33,8 +33,9 @@ struct StemTrack {
 // straight for at most three pieces. When the run starts above the root (ground clutter, a root
 // flare), the track also runs straight down from it along the run's direction to the root's
 // level and `start` is the root, which rehang_on_track moves onto it; otherwise `start` is the
-// run's last node. Empty when the base run is shorter than two radii or nothing beyond it was
-// accepted.
+// run's last node. Each point's radius is the median of its own and its neighbours', and at most
+// the radius below it (a trunk does not thicken upwards). Empty when the base run is shorter than
+// two radii or nothing beyond it was accepted.
 StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
                       const PointIndex& index, const std::vector<Eigen::Vector3d>& samples,
                       const std::vector<double>& weight, double spacing, std::uint32_t& start);

@@ -25,14 +25,16 @@ double trunk_radius_at(double h) { return 0.15 - 0.08 * h / 6.0; }
 
 // Bark points of the trunk's front half (a scanner at -y), a whorl of six branches every 0.7 m
 // (lines of points, drooping), and the front of the trunk hidden for 0.25 m below each whorl.
-std::vector<Eigen::Vector3d> conifer_scan(Rng& rng) {
+// `bulge`: the bark from 3 to 4.5 m stands this factor off the axis (a swelling that each piece
+// of the track may take, up to 1.15 x the last ones).
+std::vector<Eigen::Vector3d> conifer_scan(Rng& rng, double bulge = 1) {
   std::vector<Eigen::Vector3d> pts;
   Eigen::Vector3d e1, e2;
   bsg::perpendicular_frame(kLean, e1, e2);
   for (double h = 0; h < 6.0; h += kSpacing) {
     const double below_whorl = std::fmod(h, 0.7);
     const bool hidden = h > 0.7 && below_whorl > 0.45;
-    const double r = trunk_radius_at(h);
+    const double r = trunk_radius_at(h) * (h >= 3 && h < 4.5 ? bulge : 1);
     const int n = int(std::ceil(M_PI * r / kSpacing));
     for (int i = 0; i < n; ++i) {
       const double a = -M_PI + M_PI * (i + rng.uniform01()) / n;  // the -y half
@@ -92,11 +94,11 @@ struct ConiferCase {
   bsg::PointIndex index;
   std::vector<std::uint8_t> fitted;
   bsg::Bsg b;
-  explicit ConiferCase(std::uint64_t seed)
-      : scan(scanned(seed)), index(scan), b(wandering_skeleton(fitted)) {}
-  static std::vector<Eigen::Vector3d> scanned(std::uint64_t seed) {
+  explicit ConiferCase(std::uint64_t seed, double bulge = 1)
+      : scan(scanned(seed, bulge)), index(scan), b(wandering_skeleton(fitted)) {}
+  static std::vector<Eigen::Vector3d> scanned(std::uint64_t seed, double bulge) {
     Rng rng(seed);
-    return conifer_scan(rng);
+    return conifer_scan(rng, bulge);
   }
 };
 
@@ -147,6 +149,24 @@ TEST_CASE("stem tracking: a half-seen conifer trunk hidden below its whorls is f
   INFO("chain on the axis up to " << chain_top << ", farthest " << chain_worst);
   CHECK(chain_top > 4.7);
   CHECK(chain_worst < 0.02);
+}
+
+TEST_CASE("stem tracking: the track's radius never grows upwards, over a swelling too",
+          "[reconstruct]") {
+  for (std::uint64_t seed : {17, 18, 19}) {
+    ConiferCase c(seed, 1.12);
+    std::uint32_t start = bsg::kNone;
+    const bsg::StemTrack track =
+        bsg::track_trunk(c.b, c.fitted, c.index, c.scan, {}, kSpacing, start);
+    REQUIRE(track.axis.size() > 10);
+    double top = 0;
+    for (std::size_t j = 1; j < track.axis.size(); ++j) {
+      INFO("seed " << seed << ", point " << j << " at " << track.axis[j].dot(kLean) << " m");
+      CHECK(track.radius[j] <= track.radius[j - 1]);
+      top = std::max(top, track.axis[j].dot(kLean));
+    }
+    CHECK(top > 5.0);  // the swelling does not stop the track
+  }
 }
 
 TEST_CASE("stem tracking: below a base that starts above the root, the trunk goes on down",
