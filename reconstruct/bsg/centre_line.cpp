@@ -296,11 +296,12 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
       fits[v] = fit_slab(from[v], d, hint, index, samples, sample_weight, p, noise);
     });
     // Plausibility along the branches, parents first: no thickening outwards.
-    std::vector<double> ancestor(n, 0.0);  // radius of the nearest accepted ancestor (0: none)
     std::vector<std::uint32_t> fitted_below(n, kNone);  // the nearest accepted node, v or down
     for (std::uint32_t v : order) {
       const std::uint32_t u = parent[v] < n ? parent[v] : kNone;
-      const double ra = u == kNone ? 0.0 : (fits[u].ok ? fits[u].radius : ancestor[u]);
+      // The radius of the nearest accepted ancestor (0: none).
+      const std::uint32_t below = u == kNone ? kNone : fitted_below[u];
+      const double ra = below == kNone ? 0.0 : fits[below].radius;
       if (fits[v].ok && ra > 0 && fits[v].radius > p.max_section_growth * ra + p.spacing)
         fits[v].ok = false;
       // The slab found no stem, but one of its groups is a circle that continues the stem
@@ -312,9 +313,9 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
       // the bark between both limbs, nearer the other one.
       const SlabFit& f = fits[v];
       bool continues = true;
-      if (!f.ok && f.own_ok && f.own_from_arcs && u != kNone) {
-        const std::uint32_t a = fitted_below[u];
-        const std::uint32_t b = a != kNone && parent[a] < n ? fitted_below[parent[a]] : kNone;
+      if (!f.ok && f.own_ok && f.own_from_arcs && below != kNone) {
+        const std::uint32_t a = below;
+        const std::uint32_t b = parent[a] < n ? fitted_below[parent[a]] : kNone;
         if (b != kNone) {
           const Eigen::Vector3d axis = fits[a].axis_point - fits[b].axis_point;
           const Eigen::Vector3d q = f.own_point - fits[b].axis_point;
@@ -328,8 +329,7 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
           f.own_radius <= ra) {
         fits[v].ok = true, fits[v].axis_point = f.own_point, fits[v].radius = f.own_radius;
       }
-      ancestor[v] = ra;
-      fitted_below[v] = fits[v].ok ? v : (u == kNone ? kNone : fitted_below[u]);
+      fitted_below[v] = fits[v].ok ? v : below;
     }
     for (std::size_t v = 0; v < n; ++v) pos[v] = fits[v].ok ? fits[v].axis_point : original[v];
     repair_forks();

@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <sstream>
+#include <string>
 
 #include "backends/scanner/scanner.h"
 #include "core/rng.h"
@@ -388,15 +390,20 @@ TwoLimbResult centre_two_limbs(bool separate, bool split, double x_limb, double 
   return out;
 }
 
+std::string describe(const TwoLimbResult& with, const TwoLimbResult& without) {
+  std::ostringstream o;
+  o << "fitted " << with.fitted << " (without " << without.fitted << "), on a limb's axis "
+    << with.on_limb << " (without " << without.on_limb << "), farthest " << with.worst;
+  return o.str();
+}
+
 }  // namespace
 
 TEST_CASE("centre line: a chain between two limbs side by side goes onto the nearer limb's axis",
           "[centre_line]") {
   const TwoLimbResult with = centre_two_limbs(true, false, 0.35, 0),
                       without = centre_two_limbs(false, false, 0.35, 0);
-  INFO("fitted " << with.fitted << " (without " << without.fitted << "), on a limb's axis "
-                 << with.on_limb << " (without " << without.on_limb << "), farthest "
-                 << with.worst);
+  INFO(describe(with, without));
   CHECK(with.on_limb >= 8);  // of 12 (measured: 12)
   CHECK(without.on_limb == 0);
   CHECK(with.worst <= 0.2 * 0.15);
@@ -409,9 +416,7 @@ TEST_CASE(
   // lower half of the chain the two arcs run into each other.
   const TwoLimbResult with = centre_two_limbs(true, true, 0.1, 0.1),
                       without = centre_two_limbs(true, false, 0.1, 0.1);
-  INFO("fitted " << with.fitted << " (without " << without.fitted << "), on a limb's axis "
-                 << with.on_limb << " (without " << without.on_limb << "), farthest "
-                 << with.worst);
+  INFO(describe(with, without));
   CHECK(with.on_limb >= 9);  // of 12 (measured: 11; without the split 4)
   CHECK(without.on_limb <= 6);
   CHECK(with.worst <= 0.15 * 0.15);
