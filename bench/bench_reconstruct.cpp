@@ -94,24 +94,6 @@ std::string g_dump;    // --dump PREFIX: writes PREFIX<tree>-<stations>.truth.js
 int g_repeat = 1;      // --repeat N: time mode reconstructs each scan N times
 double g_azimuth = 0;  // --azimuth DEG: the tree turned about its root's vertical
 
-// `t` turned by `degrees` about the vertical through its first node (frames and organs too).
-void turn_about_root(Skeleton& t, double degrees) {
-  if (degrees == 0 || t.nodes.empty()) return;
-  const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a);
-  const Vec3 o = t.nodes[0].position;
-  auto dir = [&](Vec3& v) { v = Vec3(c * v.x - s * v.y, s * v.x + c * v.y, v.z); };
-  auto point = [&](Vec3& p) {
-    Vec3 d = p - o;
-    dir(d);
-    p = o + d;
-  };
-  for (SkeletonNode& n : t.nodes) point(n.position), dir(n.heading), dir(n.left), dir(n.up);
-  for (OrganAnchor& g : t.organs) {
-    point(g.position), dir(g.heading), dir(g.left), dir(g.up);
-    for (Vec3& v : g.vertices) point(v);
-  }
-}
-
 void accuracy(const std::string& path, const scanner::HarnessCase& base) {
   // "synthetic": the thick-branched test tree of tests/reconstruct/reconstruct_fixtures.h;
   // "thick": its 14 m, 60 cm trunk variant (radii 5-60 cm), "thick-small" the 8 m, 30 cm one
@@ -120,7 +102,7 @@ void accuracy(const std::string& path, const scanner::HarnessCase& base) {
                : path == "thick"       ? test::thick_tree(11, 14.0, 0.6)
                : path == "thick-small" ? test::thick_tree(5, 8.0, 0.3)
                                        : grow(path);
-  turn_about_root(t, g_azimuth);
+  scanner::turn_about_root(t, g_azimuth);
   for (int stations : g_stations) {
     scanner::HarnessCase c = base;
     c.stations = stations;

@@ -19,6 +19,12 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 constexpr double kSlope = 0.35;         // steepest terrain taken as ground: about 20 degrees
 constexpr double kMinTrunkShare = 0.1;  // a further trunk has this share of the strongest's bark
 constexpr double kMinCellShare = 0.1;   // a trunk's cell holds this share of the densest cell
+// A layer of a trunk below its footprint's slab holds this share of the slab's points per layer
+// (trunk_foot); layers hold at least kFootLayerPoints of the slab's points; the foot is at most
+// kMaxFootLayers layers below the slab.
+constexpr double kMinFootShare = 0.25;
+constexpr double kFootLayerPoints = 8;
+constexpr double kMaxFootLayers = 4096;
 
 // A 2D grid over the xy bounds of the kept points.
 struct Grid2 {
@@ -111,23 +117,27 @@ struct Footprint : Cluster {
   std::vector<int> cells;
 };
 
-// The bark in the slab above the footprint (its cells and their neighbours): a trunk rises
-// through it, a low branch or a fallen twig does not.
-double bark_above(const Grid2& g, const Footprint& f, const std::vector<double>& above) {
-  std::vector<int> seen;
-  double sum = 0;
-  for (int c : f.cells) {
+// The cells of a footprint and their neighbours, sorted: where its trunk's bark lies.
+std::vector<int> cells_around(const Grid2& g, const std::vector<int>& cells) {
+  std::vector<int> out;
+  for (int c : cells) {
     for (int dy = -1; dy <= 1; ++dy) {
       for (int dx = -1; dx <= 1; ++dx) {
         const int x = c % g.nx + dx, y = c / g.nx + dy;
-        if (x < 0 || y < 0 || x >= g.nx || y >= g.ny) continue;
-        seen.push_back(y * g.nx + x);
+        if (x >= 0 && y >= 0 && x < g.nx && y < g.ny) out.push_back(y * g.nx + x);
       }
     }
   }
-  std::sort(seen.begin(), seen.end());
-  seen.erase(std::unique(seen.begin(), seen.end()), seen.end());
-  for (int c : seen) sum += above[c];
+  std::sort(out.begin(), out.end());
+  out.erase(std::unique(out.begin(), out.end()), out.end());
+  return out;
+}
+
+// The bark in the slab above the footprint (its cells and their neighbours): a trunk rises
+// through it, a low branch or a fallen twig does not.
+double bark_above(const Grid2& g, const Footprint& f, const std::vector<double>& above) {
+  double sum = 0;
+  for (int c : cells_around(g, f.cells)) sum += above[c];
   return sum;
 }
 
@@ -240,6 +250,39 @@ std::vector<double> spacing_field(const Grid2& g, const std::vector<int>& cell,
   return field;
 }
 
+// The height of a trunk's foot below `top`, the bottom of its footprint's slab, from the heights
+// `z` of the points over the footprint (cells_around): the trunk goes on down through the layers
+// that hold at least kMinFootShare of the points per layer of the slab above, and the foot is the
+// lowest point of the last of them (the ground under a trunk, where there is some, is as dense
+// and goes with it). Whips that hang beside the trunk below its foot (a weeping tree on a bank, a
+// drooping limb over a slope) hold a few per cent of a trunk's points per layer and stop the
+// descent: the lowest point under the footprint was one of them on the weeping example turned to
+// three of six azimuths, and the tree hung from the whip's tip. Layers are `cell` high, or as
+// many cells as the slab needs for kFootLayerPoints points a layer: an empty layer of a sparse
+// scan (airborne, a few points on the trunk) is chance, not the foot.
+double trunk_foot(const std::vector<double>& z, double top, double cell, double slab) {
+  double in_slab = 0;
+  for (double h : z) in_slab += h >= top && h < top + slab;
+  const double per_cell = in_slab * cell / slab;
+  const double layer = cell * std::max(1.0, std::ceil(kFootLayerPoints / std::max(per_cell, 1e-9)));
+  if (!(layer < slab * kMaxFootLayers)) return top;
+  std::vector<double> count, lowest;  // per layer below `top`
+  for (double h : z) {
+    if (h >= top) continue;
+    // An outlier far below adds no layer: the descent stops at the first thin one anyway.
+    const double k = std::floor((top - h) / layer);
+    if (!(k < kMaxFootLayers)) continue;
+    const std::size_t i = std::size_t(k);
+    if (i >= count.size()) count.resize(i + 1, 0.0), lowest.resize(i + 1, kInf);
+    count[i] += 1;
+    lowest[i] = std::min(lowest[i], h);
+  }
+  const double needed = std::max(1.0, kMinFootShare * in_slab * layer / slab);
+  double foot = top;
+  for (std::size_t i = 0; i < count.size() && count[i] >= needed; ++i) foot = lowest[i];
+  return foot;
+}
+
 }  // namespace
 
 Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std::uint8_t>& keep,
@@ -342,6 +385,7 @@ Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std:
   }
   std::vector<std::int8_t> loose_line(loose.size(), -1);  // -1: not measured yet
   double strongest = 0;
+  std::vector<std::vector<int>> root_cells;  // per root: its footprint's cells
   for (const Footprint& cl : found) {
     const double width = std::max(cl.x1 - cl.x0, cl.y1 - cl.y0) + fine.cell;
     if (cl.n < 5) continue;
@@ -379,6 +423,7 @@ Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std:
     if (!out.roots.empty() && cl.area < kMinTrunkShare * strongest) continue;
     out.roots.push_back(base);
     out.reach.push_back(reach);
+    root_cells.push_back(cl.cells);
   }
   if (out.roots.empty() && too_wide == 0) {
     // Sparse scans (airborne LiDAR) may hold only a handful of trunk points: fall back to the
@@ -392,6 +437,7 @@ Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std:
       if (width <= p.max_trunk_width) {
         out.roots.emplace_back(cl.sx / cl.n, cl.sy / cl.n, cl.zmin);
         out.reach.push_back(0.5 * width + fine.cell);
+        root_cells.push_back(cl.cells);
       } else {
         ++too_wide;
       }
@@ -399,14 +445,19 @@ Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std:
   }
   // Terrain removal must not eat the trunk: the ground band is low-density terrain only away
   // from the trunks (4.1), so the points under each base's footprint are kept, and the root
-  // moves down to the lowest of them.
+  // moves down to the trunk's foot (trunk_foot).
+  std::vector<double> over_footprint;
   for (std::size_t r = 0; r < out.roots.size(); ++r) {
     const double reach2 = out.reach[r] * out.reach[r];
+    const std::vector<int> around = cells_around(fine, root_cells[r]);
+    over_footprint.clear();
     for (std::size_t i = 0; i < pts.size(); ++i) {
-      if (!keep[i] || (pts[i] - out.roots[r]).head<2>().squaredNorm() > reach2) continue;
-      out.terrain[i] = 0;
-      out.roots[r].z() = std::min(out.roots[r].z(), pts[i].z());
+      if (!keep[i]) continue;
+      if ((pts[i] - out.roots[r]).head<2>().squaredNorm() <= reach2) out.terrain[i] = 0;
+      if (std::binary_search(around.begin(), around.end(), fine.at(pts[i])))
+        over_footprint.push_back(pts[i].z());
     }
+    out.roots[r].z() = trunk_foot(over_footprint, out.roots[r].z(), fine.cell, p.slab);
   }
   if (out.roots.empty()) {
     out.note = too_wide ? "the dense clusters near the ground are too wide to be trunks "

@@ -8,6 +8,23 @@
 
 namespace ramus::scanner {
 
+void turn_about_root(Skeleton& t, double degrees) {
+  if (degrees == 0 || t.nodes.empty()) return;
+  const double a = degrees * M_PI / 180, c = std::cos(a), s = std::sin(a);
+  const Vec3 o = t.nodes[0].position;
+  auto dir = [&](Vec3& v) { v = Vec3(c * v.x - s * v.y, s * v.x + c * v.y, v.z); };
+  auto point = [&](Vec3& p) {
+    Vec3 d = p - o;
+    dir(d);
+    p = o + d;
+  };
+  for (SkeletonNode& n : t.nodes) point(n.position), dir(n.heading), dir(n.left), dir(n.up);
+  for (OrganAnchor& g : t.organs) {
+    point(g.position), dir(g.heading), dir(g.left), dir(g.up);
+    for (Vec3& v : g.vertices) point(v);
+  }
+}
+
 std::vector<Vec3> stations_around(const Skeleton& tree, int count) {
   Vec3 lo, hi;
   tree.bounds(lo, hi);

@@ -36,6 +36,10 @@ struct HarnessResult {
 // azimuth starting on the -y side.
 std::vector<Vec3> stations_around(const Skeleton& tree, int count);
 
+// `t` turned by `degrees` about the vertical through its first node (frames and organs too):
+// the stations then see another side of it.
+void turn_about_root(Skeleton& t, double degrees);
+
 // Scans `truth`, reconstructs, compares. The fixed distance is 1% of the tree's height; truth
 // radii are floored at half the scan's point spacing (1 / sqrt(density)) at the tree.
 HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
