@@ -1,5 +1,6 @@
 #include "mesh/frames.h"
 
+#include <algorithm>
 #include <cmath>
 
 namespace ramus::mesh {
@@ -25,6 +26,34 @@ std::vector<Vec3> polyline_tangents(const std::vector<Vec3>& pts) {
     t[i] = length(sum) > 1e-6 ? normalized(sum) : d[i - 1];
   }
   return t;
+}
+
+std::vector<Vec3> windowed_tangents(const std::vector<Vec3>& pts, const std::vector<double>& half) {
+  const std::vector<Vec3> t = polyline_tangents(pts);
+  const std::size_t m = pts.size();
+  if (m < 3 || half.size() != m) return t;
+  std::vector<double> s(m, 0.0);  // arc length at each point
+  for (std::size_t i = 1; i < m; ++i) s[i] = s[i - 1] + distance(pts[i], pts[i - 1]);
+  // The point at arc length q (clamped to the polyline).
+  auto at = [&](double q) {
+    if (!(q > 0)) return pts.front();
+    if (!(q < s.back())) return pts.back();
+    const std::size_t k = std::size_t(std::upper_bound(s.begin(), s.end(), q) - s.begin());
+    const double len = s[k] - s[k - 1];
+    return len > 0 ? pts[k - 1] + (pts[k] - pts[k - 1]) * ((q - s[k - 1]) / len) : pts[k];
+  };
+  std::vector<Vec3> out = t;
+  for (std::size_t i = 0; i < m; ++i) {
+    // Near an end the window shrinks to stay centred on its point (clamped, it would lean with
+    // the last kink); the end points take the chord of the window ahead of or behind them.
+    const double h = i == 0 || i + 1 == m ? half[i] : std::min({half[i], s[i], s.back() - s[i]});
+    const bool before = i == 0 || s[i] - s[i - 1] >= h;
+    const bool after = i + 1 == m || s[i + 1] - s[i] >= h;
+    if (!(h > 0) || (before && after)) continue;
+    const Vec3 chord = at(s[i] + h) - at(s[i] - h);
+    if (length(chord) > 1e-9 * std::max(h, 1e-300)) out[i] = normalized(chord, t[i]);
+  }
+  return out;
 }
 
 std::vector<Vec3> rotation_minimizing_frames(const std::vector<Vec3>& x, const std::vector<Vec3>& t,
