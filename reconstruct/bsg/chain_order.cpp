@@ -1,10 +1,99 @@
 #include "reconstruct/bsg/chain_order.h"
 
 #include <algorithm>
+#include <limits>
 #include <numeric>
 #include <vector>
 
 namespace ramus::bsg {
+
+namespace {
+
+// The nodes of the chain that starts at `first` (a child of a fork or of the root): its inner
+// nodes (one child each) and the fork or tip that ends it.
+std::uint32_t chain_from(std::uint32_t first, const std::vector<std::vector<std::uint32_t>>& ch,
+                         std::vector<std::uint32_t>& inner) {
+  inner.clear();
+  std::uint32_t end = first;
+  while (ch[end].size() == 1) inner.push_back(end), end = ch[end][0];
+  return end;
+}
+
+// Distance from x to the polyline `line`.
+double distance_to(const std::vector<Eigen::Vector3d>& line, const Eigen::Vector3d& x) {
+  double best = std::numeric_limits<double>::infinity();
+  for (std::size_t k = 0; k + 1 < line.size(); ++k) {
+    const Eigen::Vector3d a = line[k], ab = line[k + 1] - a;
+    const double l2 = ab.squaredNorm();
+    const double t = l2 > 0 ? std::clamp((x - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+    best = std::min(best, (x - a - t * ab).norm());
+  }
+  return best;
+}
+
+}  // namespace
+
+std::size_t return_nodes_behind_forks(Bsg& b, double min_radius) {
+  const std::size_t n = b.size();
+  if (n < 4) return 0;
+  auto ch = children_of(b.parent);
+  std::size_t moved = 0;
+  std::vector<std::uint32_t> inner, below, behind;
+  std::vector<Eigen::Vector3d> stem;
+  for (std::uint32_t s = 0; s < n; ++s) {
+    if (ch[s].size() < 2 || b.parent[s] == kNone) continue;
+    // The stem below the fork: its chain down to the fork or root it leaves.
+    below.clear();
+    std::uint32_t q0 = b.parent[s];
+    while (b.parent[q0] != kNone && ch[q0].size() == 1) below.push_back(q0), q0 = b.parent[q0];
+    std::reverse(below.begin(), below.end());
+    stem.assign(1, b.pos[q0]);
+    for (std::uint32_t v : below) stem.push_back(b.pos[v]);
+    stem.push_back(b.pos[s]);
+    const double reach = std::max(b.radius[s], min_radius);
+    for (std::uint32_t first : std::vector<std::uint32_t>(ch[s])) {
+      const std::uint32_t end = chain_from(first, ch, inner);
+      const Eigen::Vector3d chord = b.pos[end] - b.pos[s];
+      if (inner.empty() || !(chord.norm() > 0)) continue;
+      const Eigen::Vector3d u = chord.normalized();
+      // The leading inner nodes behind the fork, on the axis of the stem below it.
+      behind.clear();
+      for (std::uint32_t v : inner) {
+        if ((b.pos[v] - b.pos[s]).dot(u) >= 0 || b.radius[v] < min_radius) break;
+        if (distance_to(stem, b.pos[v]) > reach) break;
+        behind.push_back(v);
+      }
+      if (behind.empty()) continue;
+      // The chain goes on from the fork at its first node ahead; the nodes behind join the
+      // stem below, in order along its chord.
+      const std::uint32_t next = behind.size() < inner.size() ? inner[behind.size()] : end;
+      b.parent[next] = s;
+      std::replace(ch[s].begin(), ch[s].end(), first, next);
+      std::vector<std::uint32_t> all = below;
+      all.insert(all.end(), behind.begin(), behind.end());
+      const Eigen::Vector3d a = b.pos[q0], axis = b.pos[s] - a;
+      std::stable_sort(all.begin(), all.end(), [&](std::uint32_t x, std::uint32_t y) {
+        return (b.pos[x] - a).dot(axis) < (b.pos[y] - a).dot(axis);
+      });
+      std::uint32_t prev = q0;
+      std::replace(ch[q0].begin(), ch[q0].end(), below.empty() ? s : below.front(), all.front());
+      for (std::uint32_t v : all) {
+        b.parent[v] = prev;
+        if (prev != q0) ch[prev].assign(1, v);
+        prev = v;
+      }
+      b.parent[s] = prev;
+      ch[prev].assign(1, s);
+      below = all;
+      stem.assign(1, b.pos[q0]);
+      for (std::uint32_t v : below) stem.push_back(b.pos[v]);
+      stem.push_back(b.pos[s]);
+      moved += behind.size();
+    }
+  }
+  if (moved > 0) b = depth_first(b, ch);
+  return moved;
+}
 
 std::size_t order_chains_along_axes(Bsg& b, double min_radius) {
   const std::size_t n = b.size();

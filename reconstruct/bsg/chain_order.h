@@ -24,4 +24,16 @@ namespace ramus::bsg {
 // sorted.
 std::size_t order_chains_along_axes(Bsg& bsg, double min_radius);
 
+// Chains that start behind their fork. On a thick stem the BSG's paths can reach a fork from
+// above, so the chain that goes on from the fork first runs back down the stem's axis (thick_oak
+// from one station: 4-7 such chains per scan, up to 3.8 stem radii behind the fork), and a mesh
+// of it turns back on itself at the fork (a neck). The leading inner nodes of a fork's child
+// chain that lie behind the fork (along the chord from the fork to the chain's end), of radius
+// at least `min_radius` and within the fork's radius of the stem below it (the chain from the
+// fork or root below), move into that stem: the chain goes on from its first node ahead, and the
+// stem's inner nodes and the moved ones are linked in order along the stem's chord. Nodes keep
+// their positions, radii and fits; the nodes are put in parent-first order again. Returns the
+// number of nodes moved.
+std::size_t return_nodes_behind_forks(Bsg& bsg, double min_radius);
+
 }  // namespace ramus::bsg

@@ -120,6 +120,7 @@ void centre_tree(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
   }
   place_forks(b, fitted, voxel);
   drop_branches_inside_stems(b, fitted, voxel);
+  return_nodes_behind_forks(b, cp.min_hint_spacings * voxel);
   order_chains_along_axes(b, cp.min_hint_spacings * voxel);
 }
 
