@@ -77,11 +77,12 @@ void limit_radii_between_rings(Polyline& pl, const std::vector<Vec3>& t, double 
 }
 
 // Points that step back against the tube by less than its radius are merged into the point
-// before them (the last point of a chain into the one after): a tube cannot go backwards, and at
-// its scale such a step is jitter of the path (a reconstructed trunk's chain ending 4 cm beyond
-// the fork it ends at, on a 0.27 m trunk); kept, the band between the two rings turns inside
-// out and both radii give way (a neck). A point steps back when the segment to it runs against
-// the ring before it (windowed_tangents). Returns the tangents of what is left.
+// before them (at the chain's end the point before the last goes: the end stays where the chain
+// meets what grows from it): a tube cannot go backwards, and at its scale such a step is jitter
+// of the path (a reconstructed trunk's chain ending 4 cm beyond the fork it ends at, on a 0.27 m
+// trunk); kept, the band between the two rings turns inside out and both radii give way (a
+// neck). A point steps back when the segment to it runs against the ring before it
+// (windowed_tangents). Returns the tangents of what is left.
 std::vector<Vec3> merge_steps_back(Polyline& pl) {
   std::vector<Vec3> t = windowed_tangents(pl.x, pl.r);
   for (int pass = 0; pass < 4 && pl.x.size() > 2; ++pass) {
