@@ -283,6 +283,36 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
       if ((on - original[v]).norm() <= 1.5 * fits[u].radius + p.spacing) pos[v] = on;
     }
   };
+  // A root (the trunk's foot: the base finder takes the scan's vertex nearest the footprint's
+  // centroid, on the bark a one-sided scan sees) left unfitted below a fitted stem: onto that
+  // stem's axis, the line through the first two fitted nodes up its heaviest chain two radii
+  // apart or more, continued down to the root's level, when the root lies within 1.5 of their
+  // radius of it. Left on the bark, the trunk's first edge ran across it (the 14 m harness tree
+  // at 60 degrees: 0.59 m across a 0.58 m trunk, a bulb at its foot in the mesh), and the slabs
+  // of the first nodes above it, across the direction from it, cut the stem obliquely. After
+  // each pass, so that the next one takes its directions from the root on the axis, and last.
+  auto centre_roots = [&] {
+    for (std::uint32_t root : order) {
+      if (parent[root] < n) break;  // the roots come first in `order`
+      if (fits[root].ok) continue;
+      std::uint32_t lower = kNone, upper = kNone;
+      for (std::uint32_t v = main_child[root], k = 0; v != kNone && k < 8; v = main_child[v], ++k) {
+        if (!fits[v].ok) continue;
+        if (lower == kNone) {
+          lower = v;
+        } else if ((pos[v] - pos[lower]).norm() >= 2 * fits[lower].radius) {
+          upper = v;
+          break;
+        }
+      }
+      if (upper == kNone) continue;
+      const Eigen::Vector3d d = (pos[upper] - pos[lower]).normalized();
+      const Eigen::Vector3d on = pos[lower] + d * (pos[root] - pos[lower]).dot(d);
+      if ((on - pos[root]).norm() > 1.5 * fits[lower].radius + p.spacing) continue;
+      pos[root] = on;
+      fits[root].ok = true, fits[root].axis_point = on, fits[root].radius = fits[lower].radius;
+    }
+  };
   for (int pass = 0; pass < std::max(1, p.passes); ++pass) {
     // Every node is fitted from the positions of the previous pass (Jacobi: the result does not
     // depend on the order or the thread count).
@@ -333,6 +363,7 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
     }
     for (std::size_t v = 0; v < n; ++v) pos[v] = fits[v].ok ? fits[v].axis_point : original[v];
     repair_forks();
+    centre_roots();
   }
   // Stems whose chain zigzags: on a conifer's trunk scanned from one side the shortest paths
   // step from whorl to whorl across the bark, so the direction from two nodes up and down leans
@@ -412,6 +443,7 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
       repair_forks();
     }
   }
+  centre_roots();
   for (std::size_t v = 0; v < n; ++v) {
     res.fitted[v] = fits[v].ok;
     res.radius[v] = fits[v].ok ? fits[v].radius : 0.0;

@@ -192,6 +192,38 @@ TEST_CASE("centre line: nodes on the bark of a scanned thick tree move to its ax
   }
 }
 
+TEST_CASE("centre line: a root on the bark below a fitted stem goes onto its axis",
+          "[centre_line]") {
+  // The front half of a 30 cm stem, scanned from 0.1 m up; the root on the bark at the ground
+  // (the base finder's vertex nearest the footprint's centroid), the chain above it on the bark.
+  Rng rng(41);
+  std::vector<Eigen::Vector3d> bark;
+  for (int i = 0; i < 20000; ++i) {
+    const double a = rng.uniform(-M_PI, 0), z = rng.uniform(0.1, 2.0);
+    const double rr = 0.3 + rng.normal(0, 0.002);
+    bark.emplace_back(rr * std::cos(a), rr * std::sin(a), z);
+  }
+  std::vector<Eigen::Vector3d> pos{{0, -0.3, 0}};
+  std::vector<std::uint32_t> parent{bsg::kNone};
+  std::vector<double> hint{0.3};
+  for (int k = 1; k <= 8; ++k) {
+    pos.emplace_back(0.02, -0.29, 0.2 * k);
+    parent.push_back(std::uint32_t(k - 1));
+    hint.push_back(0.3);
+  }
+  bsg::CentreLineParams p;
+  p.spacing = 0.01;
+  // The cross-sections alone: the root's slab holds no point, and nothing else may place it.
+  p.chain_cylinders = false;
+  p.one_sided_sections = false;
+  const bsg::PointIndex index(bark);
+  const bsg::CentreLineResult fit = bsg::centre_line(pos, parent, hint, bark, index, {}, p);
+  INFO("root at " << pos[0].transpose());
+  CHECK(fit.fitted[0]);
+  CHECK(std::hypot(pos[0].x(), pos[0].y()) < 0.03);
+  CHECK(std::abs(pos[0].z()) < 0.03);
+}
+
 // A stem of 20 cm whose bark above 1 m stands 1.25 x as far off its axis (as a slab across two
 // limbs pressed together after a fork measures): a cross-section does not thicken its stem by
 // more than 1.15 x (CentreLineParams::max_section_growth), so the nodes above 1 m keep no
