@@ -292,6 +292,7 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
   // of the first nodes above it, across the direction from it, cut the stem obliquely. After
   // each pass, so that the next one takes its directions from the root on the axis, and last.
   auto centre_roots = [&] {
+    if (!p.centre_roots) return;
     for (std::uint32_t root : order) {
       if (parent[root] < n) break;  // the roots come first in `order`
       if (fits[root].ok) continue;
@@ -306,8 +307,11 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
         }
       }
       if (upper == kNone) continue;
+      // Down to the root's level along a stem that rises (within 37 degrees of the vertical; a
+      // sparse scan's stem may lean anywhere, and continued down it passed metres off the root).
       const Eigen::Vector3d d = (pos[upper] - pos[lower]).normalized();
-      const Eigen::Vector3d on = pos[lower] + d * (pos[root] - pos[lower]).dot(d);
+      if (d.z() < 0.8 || pos[root].z() > pos[lower].z()) continue;
+      const Eigen::Vector3d on = pos[lower] + d * ((pos[root].z() - pos[lower].z()) / d.z());
       if ((on - pos[root]).norm() > 1.5 * fits[lower].radius + p.spacing) continue;
       pos[root] = on;
       fits[root].ok = true, fits[root].axis_point = on, fits[root].radius = fits[lower].radius;

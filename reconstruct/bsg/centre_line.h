@@ -64,6 +64,10 @@ struct CentreLineParams {
   // Nodes still unfitted are fitted with their branch's radius on arcs from 60 degrees
   // (one_sided_sections.h).
   bool one_sided_sections = true;
+  // A root left unfitted below a fitted stem moves onto the stem's axis continued down (the BSG
+  // roots a tree at the scan's vertex nearest its base, on the bark; the flood fill roots it at
+  // the base itself and turns this off).
+  bool centre_roots = true;
   int passes = 2;             // refits from the moved nodes (better directions, centred balls)
   int max_slab_points = 300;  // slabs with more points are thinned evenly before the fit
 };

@@ -524,7 +524,8 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
     for (std::uint32_t i : kept_ids) wood.push_back(epts[i]);
     bsg::CentreLineParams cp;
     cp.spacing = 0.5 * edge;
-    cp.passes = 1;  // the flood's nodes already sit inside their branches' cross-sections
+    cp.passes = 1;            // the flood's nodes already sit inside their branches' cross-sections
+    cp.centre_roots = false;  // its roots are the bases themselves, not vertices on the bark
     for (Skeleton& s : trees) {
       if (s.size() >= 2) bsg::centre_skeleton(s, wood, cp);
     }
