@@ -141,30 +141,28 @@ double bark_above(const Grid2& g, const Footprint& f, const std::vector<double>&
   return sum;
 }
 
-// The extent of a footprint along and across its principal axes, its cells weighted by their
-// points: sqrt(12) times the standard deviations, so that a uniform segment measures its length
-// and width. Along the principal axes, not the grid's: a half ring of bark measures 2.45 r by
-// 1.06 r however it lies, and a wall piece its length by about nothing. By points, not cells: a
-// low branch that crosses the slab beside a trunk adds cells but few points (the conifer turned
-// to 120 degrees: the trunk's half ring and a branch of the lowest whorl made a footprint 0.78 m
-// by 0.2 m along the grid, taken for a piece of wall, and the tree was rooted on the branch).
-void point_weighted_extent(const Grid2& g, const std::vector<int>& cells,
-                           const std::vector<double>& count, double& length, double& thickness) {
+// The extent of a footprint along and across its principal axes, its cells weighted by
+// `weight[c]` (each 1 when null): sqrt(12) times the standard deviations, so that a uniform
+// segment measures its length and width. Along the principal axes, not the grid's: a half ring
+// of bark measures 2.45 r by 1.06 r however it lies, and a wall piece its length by about
+// nothing. Weighted by points, a low branch that crosses the slab beside a trunk adds cells but
+// few points (the conifer turned to 120 degrees: the trunk's half ring and a branch of the
+// lowest whorl made a footprint 0.78 m by 0.2 m along the grid, taken for a piece of wall, and
+// the tree was rooted on the branch).
+void principal_extent(const Grid2& g, const std::vector<int>& cells,
+                      const std::vector<double>* weight, double& length, double& thickness) {
+  auto at = [&](int c) {
+    return Eigen::Vector2d((c % g.nx + 0.5) * g.cell, (c / g.nx + 0.5) * g.cell);
+  };
+  auto w = [&](int c) { return weight ? (*weight)[std::size_t(c)] : 1.0; };
   double sw = 0;
   Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-  for (int c : cells) {
-    const Eigen::Vector2d q((c % g.nx + 0.5) * g.cell, (c / g.nx + 0.5) * g.cell);
-    sw += count[c], mean += count[c] * q;
-  }
+  for (int c : cells) sw += w(c), mean += w(c) * at(c);
   length = thickness = 0;
   if (!(sw > 0)) return;
   mean /= sw;
   Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (int c : cells) {
-    const Eigen::Vector2d q =
-        Eigen::Vector2d((c % g.nx + 0.5) * g.cell, (c / g.nx + 0.5) * g.cell) - mean;
-    cov += count[c] * q * q.transpose();
-  }
+  for (int c : cells) cov += w(c) * (at(c) - mean) * (at(c) - mean).transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov / sw);
   length = std::sqrt(12.0 * std::max(eig.eigenvalues()(1), 0.0));
   thickness = std::sqrt(12.0 * std::max(eig.eigenvalues()(0), 0.0));
@@ -214,21 +212,9 @@ std::vector<Footprint> footprints(const Grid2& g, const std::vector<double>& cou
 // the bounding box, so that a fence at 45 degrees is a line too.
 bool is_line(const Grid2& g, const Footprint& f, double max_width) {
   if (f.cells.size() < 3) return false;
-  Eigen::Vector2d mean = Eigen::Vector2d::Zero();
-  std::vector<Eigen::Vector2d> xy;
-  for (int c : f.cells) {
-    xy.emplace_back(g.x0 + (c % g.nx + 0.5) * g.cell, g.y0 + (c / g.nx + 0.5) * g.cell);
-    mean += xy.back();
-  }
-  mean /= double(xy.size());
-  Eigen::Matrix2d cov = Eigen::Matrix2d::Zero();
-  for (const auto& q : xy) cov += (q - mean) * (q - mean).transpose();
-  cov /= double(xy.size());
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
-  const double major = std::sqrt(std::max(eig.eigenvalues()(1), 0.0));
-  const double minor = std::sqrt(std::max(eig.eigenvalues()(0), 0.0));
-  // A uniform segment of length L has a standard deviation of L / sqrt(12).
-  return std::sqrt(12.0) * major > max_width && minor < 0.1 * major;
+  double length = 0, thickness = 0;
+  principal_extent(g, f.cells, nullptr, length, thickness);
+  return length > max_width && thickness < 0.1 * length;
 }
 
 // The squared spacing of the scan at each of pts[ids[i]]: the squared distance to its nearest
@@ -423,7 +409,7 @@ Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std:
     if (!out.roots.empty() && bark_above(fine, cl, area_above) < 0.5 * cl.area) continue;
     // A trunk's footprint is round (a half ring from one side); a piece of wall is a line.
     double length = 0, thickness = 0;
-    point_weighted_extent(fine, cl.cells, count, length, thickness);
+    principal_extent(fine, cl.cells, &count, length, thickness);
     if (width > p.max_trunk_width ||
         (width > 4 * fine.cell && thickness + fine.cell < 0.3 * (length + fine.cell))) {
       ++too_wide;

@@ -42,20 +42,26 @@ std::size_t return_nodes_behind_forks(Bsg& b, double min_radius) {
   std::vector<Eigen::Vector3d> stem;
   for (std::uint32_t s = 0; s < n; ++s) {
     if (ch[s].size() < 2 || b.parent[s] == kNone) continue;
-    // The stem below the fork: its chain down to the fork or root it leaves.
-    below.clear();
-    std::uint32_t q0 = b.parent[s];
-    while (b.parent[q0] != kNone && ch[q0].size() == 1) below.push_back(q0), q0 = b.parent[q0];
-    std::reverse(below.begin(), below.end());
-    stem.assign(1, b.pos[q0]);
-    for (std::uint32_t v : below) stem.push_back(b.pos[v]);
-    stem.push_back(b.pos[s]);
+    // The stem below the fork (its chain down to the fork or root it leaves, `below` its inner
+    // nodes from the bottom up), gathered the first time a chain of the fork starts behind it.
+    std::uint32_t q0 = kNone;
+    auto gather_stem = [&] {
+      below.clear();
+      q0 = b.parent[s];
+      while (b.parent[q0] != kNone && ch[q0].size() == 1) below.push_back(q0), q0 = b.parent[q0];
+      std::reverse(below.begin(), below.end());
+      stem.assign(1, b.pos[q0]);
+      for (std::uint32_t v : below) stem.push_back(b.pos[v]);
+      stem.push_back(b.pos[s]);
+    };
     const double reach = std::max(b.radius[s], min_radius);
     for (std::uint32_t first : std::vector<std::uint32_t>(ch[s])) {
       const std::uint32_t end = chain_from(first, ch, inner);
       const Eigen::Vector3d chord = b.pos[end] - b.pos[s];
       if (inner.empty() || !(chord.norm() > 0)) continue;
       const Eigen::Vector3d u = chord.normalized();
+      if ((b.pos[inner[0]] - b.pos[s]).dot(u) >= 0) continue;  // it starts ahead (most do)
+      if (q0 == kNone) gather_stem();
       // The leading inner nodes behind the fork, on the axis of the stem below it.
       behind.clear();
       for (std::uint32_t v : inner) {
@@ -84,10 +90,7 @@ std::size_t return_nodes_behind_forks(Bsg& b, double min_radius) {
       }
       b.parent[s] = prev;
       ch[prev].assign(1, s);
-      below = all;
-      stem.assign(1, b.pos[q0]);
-      for (std::uint32_t v : below) stem.push_back(b.pos[v]);
-      stem.push_back(b.pos[s]);
+      gather_stem();  // the stem as it is now, for the fork's next chain
       moved += behind.size();
     }
   }
