@@ -66,6 +66,84 @@ TrackDistance distance_to_track(const StemTrack& t, const Eigen::Vector3d& x) {
   return out;
 }
 
+// The nodes of the fitted base run that lie on one axis, in order along it. The centre lines fit
+// each node on its own, and in a one-sided scan a few nodes of a trunk's chain are fitted to
+// something else: a whorl's branch (the conifer from one station at 60 degrees: two nodes 0.25-
+// 0.35 m off a 0.22 m trunk, one 0.5 m out on a 6 cm branch), or two stems at once above a fork
+// (thick_oak at 180 degrees: a circle of 0.42 m across the leader and a limb, 0.34 m off the
+// leader's axis). The track started at the run's last node along the direction of the last three
+// radii, 45 degrees off the conifer's trunk. So: over the run's nodes within kBaseWindow radii of
+// its first, the line from the first node through another that has the most nodes within a
+// quarter of their radius (plus a spacing) of it (of equal counts the longer line; a trunk bends
+// little over ten radii: a sagitta of a quarter radius needs a bend of radius 50 r, so a line is
+// its axis there); beyond that window each node is kept when it lies within half its radius (the
+// track's tolerance for a continuation) of the line along the last kept nodes (their chord over
+// at least three radii), which follows a trunk that curves.
+constexpr double kBaseWindow = 10.0;
+constexpr double kOnLine = 0.25;
+constexpr double kOnChord = 0.5;
+
+std::vector<std::uint32_t> base_on_axis(const Bsg& b, const std::vector<std::uint32_t>& run,
+                                        double spacing) {
+  auto within = [&](std::uint32_t v, const Eigen::Vector3d& a, const Eigen::Vector3d& dir,
+                    double share) {
+    const Eigen::Vector3d x = b.pos[v] - a;
+    return (x - x.dot(dir) * dir).norm() <= share * b.radius[v] + spacing;
+  };
+  const Eigen::Vector3d origin = b.pos[run.front()];
+  const double window = kBaseWindow * b.radius[run.front()];
+  std::size_t in_window = 1;
+  while (in_window < run.size() && (b.pos[run[in_window]] - origin).norm() <= window) ++in_window;
+  std::vector<std::uint8_t> keep(run.size(), 0);
+  keep[0] = 1;
+  std::size_t best = 0, best_count = 1;
+  double best_length = 0;
+  for (std::size_t k = 1; k < in_window; ++k) {
+    const Eigen::Vector3d dir = b.pos[run[k]] - origin;
+    const double length = dir.norm();
+    if (!(length > 0)) continue;
+    std::size_t count = 0;
+    for (std::size_t i = 0; i < in_window; ++i)
+      count += within(run[i], origin, dir / length, kOnLine);
+    if (count > best_count || (count == best_count && length > best_length)) {
+      best = k, best_count = count, best_length = length;
+    }
+  }
+  if (best == 0) {
+    std::fill(keep.begin(), keep.end(), 1);  // nothing to judge by: the run as it is
+  } else {
+    const Eigen::Vector3d dir = (b.pos[run[best]] - origin) / best_length;
+    for (std::size_t i = 1; i < in_window; ++i) keep[i] = within(run[i], origin, dir, kOnLine);
+    std::size_t last = 0;
+    for (std::size_t i = 1; i < in_window; ++i) last = keep[i] ? i : last;
+    for (std::size_t i = in_window; i < run.size(); ++i) {
+      std::size_t back = 0;
+      for (std::size_t j = last; j-- > 0;) {
+        if (keep[j] && (b.pos[run[last]] - b.pos[run[j]]).norm() >= 3 * b.radius[run[last]]) {
+          back = j;
+          break;
+        }
+      }
+      const Eigen::Vector3d chord = b.pos[run[last]] - b.pos[run[back]];
+      keep[i] =
+          chord.norm() > 0 ? within(run[i], b.pos[run[last]], chord.normalized(), kOnChord) : 1;
+      if (keep[i]) last = i;
+    }
+  }
+  std::vector<std::uint32_t> kept;
+  for (std::size_t i = 0; i < run.size(); ++i) {
+    if (keep[i]) kept.push_back(run[i]);
+  }
+  // In order along the axis (a chain may step back along it; the track must not). A run with
+  // every node on the axis stays as it is.
+  if (kept.size() == run.size()) return kept;
+  const Eigen::Vector3d axis = b.pos[kept.back()] - origin;
+  std::stable_sort(kept.begin() + 1, kept.end(), [&](std::uint32_t u, std::uint32_t v) {
+    return (b.pos[u] - origin).dot(axis) < (b.pos[v] - origin).dot(axis);
+  });
+  return kept;
+}
+
 }  // namespace
 
 StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
@@ -93,13 +171,33 @@ StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
     i = j;
   }
   if (run == 0) return t;
-  const std::uint32_t s = chain[run - 1];
+  // The base's nodes on one axis (base_on_axis); the track starts from the last of them. A run
+  // whose last node is off that axis, still fitted, goes on along another stem: the trunk's chain
+  // turned into a limb at a fork (thick_oak from one station at 120 degrees: the run's last three
+  // nodes on a 27 cm limb), and the base is taken as it is, as the track's start has always been
+  // (a track from the last node on the axis, below the fork, spanned the stems that leave it with
+  // the trunk's radius and went 0.3 m off the leader).
+  const std::vector<std::uint32_t> run_nodes(chain.begin() + first, chain.begin() + run);
+  std::vector<std::uint32_t> base = base_on_axis(b, run_nodes, spacing);
+  if (std::find(base.begin(), base.end(), run_nodes.back()) == base.end()) base = run_nodes;
+  const bool wandered = base.size() < run_nodes.size();
+  const std::uint32_t s = base.back();
   double r = b.radius[s];
+  if (wandered) {
+    // The radii were smoothed with the neighbours' (smooth_fitted_radii), the wandering nodes'
+    // among them: the conifer's base ends at 0.14 m on a 0.21 m trunk. The median of the last
+    // five kept nodes.
+    std::vector<double> last;
+    for (std::size_t i = base.size(); i-- > 0 && last.size() < 5;)
+      last.push_back(b.radius[base[i]]);
+    std::sort(last.begin(), last.end());
+    r = last[last.size() / 2];
+  }
   // The base's direction over at least three radii of it (all of it when shorter).
-  Eigen::Vector3d from = b.pos[chain[first]];
-  for (std::size_t i = run - 1; i-- > first;) {
-    if ((b.pos[s] - b.pos[chain[i]]).norm() >= 3 * r) {
-      from = b.pos[chain[i]];
+  Eigen::Vector3d from = b.pos[base.front()];
+  for (std::size_t i = base.size() - 1; i-- > 0;) {
+    if ((b.pos[s] - b.pos[base[i]]).norm() >= 3 * r) {
+      from = b.pos[base[i]];
       break;
     }
   }
@@ -189,25 +287,28 @@ StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
   while (!t.fitted.empty() && !t.fitted.back()) {
     t.axis.pop_back(), t.radius.pop_back(), t.fitted.pop_back();
   }
-  if (t.axis.size() < 2) return StemTrack{};
+  if (t.axis.size() < 2 && !wandered) return StemTrack{};
   start = s;
   // Below a fitted base that starts above the root (a root flare, undergrowth and ground around
   // the base, where the BSG's chain wanders), the trunk goes on straight down along the base's
-  // direction to the root's level, and the root moves onto it.
+  // direction to the root's level, and the root moves onto it. A base with nodes off its axis
+  // becomes part of the track too, from its first node, so that those nodes are replaced.
   const double below = (b.pos[0] - b.pos[chain[first]]).dot(base_direction);
-  if (first > 0 && below < 0) {
+  const bool extend_down = first > 0 && below < 0;
+  if (extend_down || wandered) {
     StemTrack full;
     const double r_base = b.radius[chain[first]];
-    const int pieces = std::max(1, int(std::ceil(-below / std::max(2 * r_base, 6 * spacing))));
+    const int pieces =
+        extend_down ? std::max(1, int(std::ceil(-below / std::max(2 * r_base, 6 * spacing)))) : 0;
     for (int k = 0; k < pieces; ++k) {
       full.axis.push_back(b.pos[chain[first]] +
                           below * (1.0 - double(k) / pieces) * base_direction);
       full.radius.push_back(r_base);
       full.fitted.push_back(0);
     }
-    for (std::size_t i = first; i + 1 < run; ++i) {
-      full.axis.push_back(b.pos[chain[i]]);
-      full.radius.push_back(b.radius[chain[i]]);
+    for (std::size_t i = 0; i + 1 < base.size(); ++i) {
+      full.axis.push_back(b.pos[base[i]]);
+      full.radius.push_back(b.radius[base[i]]);
       full.fitted.push_back(1);
     }
     for (std::size_t j = 0; j < t.axis.size(); ++j) {
@@ -216,7 +317,7 @@ StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
       full.fitted.push_back(t.fitted[j]);
     }
     t = std::move(full);
-    start = 0;
+    start = extend_down ? 0 : chain[first];
   }
   // Each point's radius is the median of its own and its neighbours' (the start's is its fit's):
   // one piece through a whorl's branch bases measures a bulge the trunk does not have.
