@@ -1,10 +1,14 @@
 // Diagnostics: the code table, the sink, the text rendering (location, source line, caret,
-// notes) and the JSON rendering (valid, escaped).
+// notes, a long line in a window) and the JSON rendering (valid, escaped).
 #include <catch2/catch.hpp>
+#include <fstream>
+#include <iterator>
 #include <set>
 #include <string>
 
+#include "grammar/check.h"
 #include "grammar/diagnostic.h"
+#include "grammar/loader.h"
 
 using namespace ramus;
 
@@ -88,6 +92,51 @@ TEST_CASE("diagnostic: control bytes and broken UTF-8 are not printed raw", "[di
   CHECK(text.find('\x1b') == std::string::npos);
   CHECK(text.find('\xff') == std::string::npos);
   CHECK(text.find("  1 | ab??[31m?\n") != std::string::npos);
+}
+
+TEST_CASE("diagnostic: a long line is quoted in a window around the span", "[diagnostic]") {
+  // One line of garbage can hold thousands of errors; quoting all of it under each one made the
+  // output grow with the square of the input (5,277 errors on an 11 KB line wrote 211 MB).
+  SourceManager sm;
+  std::string line(1000, 'a');
+  line.replace(500, 3, "QQQ");
+  std::uint32_t f = sm.add("long.ramus", line + "\n");
+  Diagnostic d{DiagCode::UnknownModule, Severity::Error, {f, 500, 503}, "unknown", {}};
+  const std::string text = render_text(sm, d);
+  const std::string quoted =
+      "  1 | ..." + std::string(40, 'a') + "QQQ" + std::string(77, 'a') + "...\n";
+  CHECK(text == "long.ramus:1:501: error[E0101]: unknown\n" + quoted + "    |    " +
+                    std::string(40, ' ') + "^~~\n");
+  // Near the start the window starts with the line; a caret runs at most to the window's end.
+  Diagnostic first{DiagCode::SyntaxError, Severity::Error, {f, 2, 900}, "x", {}};
+  CHECK(render_text(sm, first) == "long.ramus:1:3: error[E0003]: x\n  1 | " +
+                                      std::string(120, 'a') + "...\n    |   ^" +
+                                      std::string(117, '~') + "\n");
+  // The window does not cut a UTF-8 character: 2-byte characters from byte 0, the span at 300.
+  std::string wide;
+  for (int i = 0; i < 400; ++i) wide += "\xc3\xa9";
+  std::uint32_t g = sm.add("wide.ramus", wide + "\n");
+  Diagnostic w{DiagCode::SyntaxError, Severity::Error, {g, 301, 302}, "x", {}};
+  const std::string wt = render_text(sm, w);
+  const std::size_t from = wt.find("| ...") + 5, to = wt.find("...\n", from);
+  REQUIRE(to != std::string::npos);
+  CHECK((to - from) % 2 == 0);
+  CHECK(wt.find('?') == std::string::npos);  // still valid UTF-8, nothing replaced
+
+  // The fuzzer's input: one line of 11,312 bytes with 5,277 errors (211 MB of text before).
+  std::ifstream in(RAMUS_SOURCE_DIR "/tests/fuzz/corpus/parse_check/regress_long_line_errors.ramus",
+                   std::ios::binary);
+  const std::string garbage{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+  REQUIRE(garbage.size() == 11312);
+  SourceManager gsm;
+  DiagnosticSink diags;
+  LoadOptions options;
+  options.stdlib_dirs = {"/nonexistent-ramus-stdlib"};
+  Program program = load_program_text("garbage.ramus", garbage, gsm, diags, options);
+  if (!program.files.empty()) check_program(program, gsm, diags);
+  REQUIRE(diags.error_count() > 5000);
+  // A few lines of a terminal's width for each diagnostic and its note (3.0 MB).
+  CHECK(render_text(gsm, diags.all()).size() < 1000 * diags.all().size());
 }
 
 TEST_CASE("diagnostic: JSON is one valid document with escaped strings", "[diagnostic]") {
