@@ -254,8 +254,8 @@ TEST_CASE("stem tracking: fitted base nodes off the trunk's axis are passed over
   CHECK(worst < 0.02);
   bsg::rehang_on_track(b, fitted, track, start, kSpacing);
   for (std::uint32_t v = 1; v < b.size(); ++v) REQUIRE(b.parent[v] < v);
-  // The root's heaviest chain runs on the axis: node 3 went with the track, node 2 (beyond the
-  // track's reach) hangs from it as a stub.
+  // The root's heaviest chain runs on the axis. Node 3 was within the track's tube and went;
+  // node 2, 0.3 m out, is outside it and stays as a one-node stub hanging from the track.
   CHECK(heaviest_chain_on_axis(b, top - 0.5).worst < 0.02);
 }
 
