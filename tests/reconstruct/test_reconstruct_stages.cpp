@@ -119,3 +119,41 @@ TEST_CASE("reconstruct stages: Dijkstra from two roots splits a line between the
   CHECK(t0.size() == 5);
   for (std::size_t v = 1; v < t0.size(); ++v) CHECK(t0.parent[v] < v);
 }
+
+// A fork whose parent edge is in line with its lighter child: each edge removal moves the fork
+// to the weighted midpoint, the parent's cylinder stretches with it and covers the next edge of
+// that child, so without a bound the fork walks along it, and the heavier branch ends up hanging
+// from far out on the lighter one (the weeping example's first limb, 0.55 m).
+TEST_CASE("reconstruct stages: edge removal does not walk a fork along its lighter child",
+          "[reconstruct]") {
+  Bsg b = chain(2, Eigen::Vector3d(0.5, 0, 0));  // the stem, the fork u = 1 at x = 0.5
+  const std::uint32_t u = 1;
+  auto add = [&](const Eigen::Vector3d& p, std::uint32_t parent, double mass) {
+    b.pos.push_back(p);
+    b.parent.push_back(parent);
+    b.vertex.push_back(std::uint32_t(b.vertex.size()));
+    b.mass.push_back(mass);
+    return std::uint32_t(b.pos.size() - 1);
+  };
+  // The lighter child: on along the stem's line in steps of 0.1, heavy with points.
+  for (std::uint32_t k = 1, p = u; k <= 8; ++k) p = add({0.5 + 0.1 * k, 0, 0}, p, 20);
+  // The heavier branch: up at 45 degrees, twice as long.
+  for (std::uint32_t k = 1, p = u; k <= 12; ++k) p = add({0.5 + 0.1 * k, 0, 0.1 * k}, p, 1);
+  importance_weights(b, 0.0);
+  b.radius.assign(b.size(), 0.15);
+  const Eigen::Vector3d fork = b.pos[u];
+  for (int round = 0; round < 40 && collapse_overlaps(b, 0.5, 0.0) > 0; ++round) {
+  }
+  // The fork is the node with two children; it stays within a tenth of its radius (unbounded,
+  // it went 0.25 m along the lighter child).
+  std::vector<int> children(b.size(), 0);
+  for (std::size_t v = 1; v < b.size(); ++v) ++children[b.parent[v]];
+  std::size_t forks = 0;
+  for (std::size_t v = 0; v < b.size(); ++v) {
+    if (children[v] < 2) continue;
+    ++forks;
+    INFO("fork at " << b.pos[v].transpose());
+    CHECK((b.pos[v] - fork).norm() <= 0.1 * 0.15 + 1e-12);
+  }
+  CHECK(forks == 1);
+}
