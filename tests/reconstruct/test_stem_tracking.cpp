@@ -255,7 +255,8 @@ TEST_CASE("stem tracking: fitted base nodes off the trunk's axis are passed over
   bsg::rehang_on_track(b, fitted, track, start, kSpacing);
   for (std::uint32_t v = 1; v < b.size(); ++v) REQUIRE(b.parent[v] < v);
   // The root's heaviest chain runs on the axis. Node 3 was within the track's tube and went;
-  // node 2, 0.3 m out, is outside it and stays as a one-node stub hanging from the track.
+  // node 2, 0.3 m out, is outside it and is kept, as a one-node branch off the track (a stem
+  // that leaves the trunk there is not the track's to remove).
   CHECK(heaviest_chain_on_axis(b, top - 0.5).worst < 0.02);
 }
 
