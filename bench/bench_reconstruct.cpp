@@ -80,6 +80,8 @@ void set_option(ReconstructOptions& o, const std::string& kv) {
     o.ground_band = v;
   else if (k == "centre_lines")
     o.centre_lines = v != 0;
+  else if (k == "extend_tips")
+    o.extend_tips = v != 0;
   else if (k == "exponent")
     o.allometry_exponent = v;
   else if (k == "terrain")

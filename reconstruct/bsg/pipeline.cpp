@@ -19,6 +19,7 @@
 #include "reconstruct/bsg/output.h"
 #include "reconstruct/bsg/refine.h"
 #include "reconstruct/bsg/stem_tracking.h"
+#include "reconstruct/bsg/tip_extension.h"
 #include "reconstruct/bsg/trunk_radius.h"
 #include "reconstruct/reconstruct.h"
 #include "reconstruct/wood/reconstruct_wood.h"
@@ -270,6 +271,11 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
                                   scale.voxel);
     inflate(trees[k], samples[k], counts[k], tp);
     if (o.centre_lines) centre_tree(trees[k], samples[k], counts[k], scale.voxel);
+    if (o.extend_tips) {
+      TipExtensionParams xp;
+      xp.spacing = scale.voxel;
+      extend_tips(trees[k], samples[k], PointIndex(samples[k]), xp);
+    }
     LeafParams lp{o.leaves,     o.min_leaves,
                   o.max_leaves, o.leaf_sphere > 0 ? o.leaf_sphere : 2 * scale.voxel,
                   o.seed,       k};
