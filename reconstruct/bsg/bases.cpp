@@ -9,6 +9,7 @@
 #include <limits>
 #include <map>
 
+#include "reconstruct/bsg/ground_surface.h"
 #include "reconstruct/bsg/kdtree.h"
 
 namespace ramus::bsg {
@@ -348,6 +349,19 @@ Bases find_bases(const std::vector<Eigen::Vector3d>& pts, const std::vector<std:
   if (standing == 0) {
     out.note = "every point lies in the terrain layer: no tree stands above the ground";
     return out;
+  }
+  // The layer is ground only where it is a wide flat surface (ground_surface.h): elsewhere it is
+  // the lowest branches of a scan without ground, and stays.
+  if (p.remove_terrain) {
+    std::vector<std::uint32_t> layer;
+    std::vector<Eigen::Vector3d> layer_pos;
+    for (std::size_t i = 0; i < pts.size(); ++i) {
+      if (out.terrain[i]) layer.push_back(std::uint32_t(i)), layer_pos.push_back(pts[i]);
+    }
+    GroundSurfaceParams gp;
+    gp.min_extent = 2 * coarse.cell;
+    const std::vector<std::uint8_t> ground = ground_surface(layer_pos, gp);
+    for (std::size_t j = 0; j < layer.size(); ++j) out.terrain[layer[j]] = ground[j];
   }
   // The bark of each cell: each point stands for the square of the scan's spacing around it. A
   // scanner's samples thin out with the square of the range (one station in a plot sees the

@@ -31,7 +31,8 @@ struct StemTrack {
 // 15 degrees and half a radius of the prediction), else a circle across the predicted axis on
 // the same terms; where neither is accepted (a whorl, an occluded stretch) the axis goes on
 // straight for at most three pieces. Fitted nodes of the run that lie off its axis (a line over
-// its first ten radii, the chord of the kept nodes beyond) neither start nor steer the track:
+// its first ten radii, beyond them the line of the kept nodes of the last ten radii) neither
+// start nor steer the track:
 // it starts from the last node on the axis, with the median radius of the last five there, and
 // the nodes on the axis become the track's first points, from the run's first node, which is
 // then `start` (so rehang_on_track replaces the others). When the run's last node is itself off

@@ -26,6 +26,7 @@ Eigenfeatures from_covariance(const Eigen::Matrix3d& cov) {
   f.planarity = float((l2 - l3) / l1);
   f.scattering = float(l3 / l1);
   f.verticality = float(std::abs(es.eigenvectors().col(2).z()));
+  f.normal_z = float(std::abs(es.eigenvectors().col(0).z()));
   return f;
 }
 

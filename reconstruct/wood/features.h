@@ -18,6 +18,9 @@ namespace ramus::wood {
 
 struct Eigenfeatures {
   float linearity = 0, planarity = 0, scattering = 1, verticality = 0;
+  // |z| of the normal (the least eigenvector): 1 on a horizontal surface, 0 on a vertical one
+  // (verticality is of the principal direction; ground_surface.h).
+  float normal_z = 0;
 };
 
 // Features of the neighbourhood `pts[ids[0..n)]`; a degenerate one (fewer than 3 points, or all

@@ -79,12 +79,12 @@ TEST_CASE("reconstruct accuracy: synthetic tree scanned from one station", "[acc
 // The issue's targets (precision within 2 x radius >= 0.9, recall within 2 x radius >= 0.9,
 // total length within 20%) on the bundled grammar trees scanned from three stations, with the
 // default options. Measured (precision / recall / length): broadleaf 0.978 / 0.934 / 0.939,
-// conifer 0.977 / 0.885 / 0.929, weeping 0.934 / 0.935 / 1.006. The recalls were 0.904 / 0.818 /
-// 0.925 before the tips walked on to the last samples ahead of them (tip_extension.h). The
-// conifer's recall is below the target: the terrain layer takes the drooping ends of its lowest
-// whorls (docs/reconstruction.md, Tips); its bound is a regression guard. Deterministic (fixed
-// grammar seed, scanner seed and reconstruction). The fixed-distance recall (1% of the height)
-// is a regression guard.
+// conifer 0.978 / 0.928 / 0.973, weeping 0.925 / 0.931 / 1.004. The recalls were 0.904 / 0.818 /
+// 0.925 before the tips walked on to the last samples ahead of them (tip_extension.h), and the
+// conifer's 0.885 while the terrain layer took the drooping ends of its lowest whorls
+// (ground_surface.h). Deterministic (fixed grammar seed, scanner seed and reconstruction); the
+// checks are the targets themselves. The fixed-distance recall (1% of the height) is a
+// regression guard.
 namespace {
 
 scanner::HarnessResult scan_grammar(const char* grammar, int stations,
@@ -95,15 +95,14 @@ scanner::HarnessResult scan_grammar(const char* grammar, int stations,
                                          c, o);
 }
 
-void check_targets(const scanner::HarnessResult& r, double min_recall_distance,
-                   double min_recall = 0.9) {
+void check_targets(const scanner::HarnessResult& r, double min_recall_distance) {
   const SkeletonComparison& a = r.at_radius;
   INFO("points " << r.points << " trees " << r.trees << " precision " << a.precision << " recall "
                  << a.recall << " precision(1%h) " << a.precision_distance << " recall(1%h) "
                  << a.recall_distance << " length " << a.length_ratio);
   REQUIRE(r.trees == 1);
   CHECK(a.precision >= 0.9);
-  CHECK(a.recall >= min_recall);
+  CHECK(a.recall >= 0.9);
   CHECK(a.length_ratio > 0.8);
   CHECK(a.length_ratio < 1.2);
   CHECK(a.recall_distance >= min_recall_distance);
@@ -117,7 +116,7 @@ TEST_CASE("reconstruct accuracy: bundled broadleaf grammar, three stations, defa
 }
 
 TEST_CASE("reconstruct accuracy: bundled conifer grammar, three stations, defaults", "[accuracy]") {
-  check_targets(scan_grammar("conifer.ramus", 3), 0.85, 0.87);
+  check_targets(scan_grammar("conifer.ramus", 3), 0.85);
 }
 
 TEST_CASE("reconstruct accuracy: bundled weeping grammar, three stations, defaults", "[accuracy]") {

@@ -98,7 +98,7 @@ TEST_CASE("regrown wavelet tree: one piece from one root on every readable real 
       // The grown tree stands in the aligned frame, the scan where it was scanned: the envelope
       // and the lean are measured from each one's own base. Measured at 64 / 128 (in the order
       // above): 0.89 / 0.85, 0.93 / 0.90, 0.83 / 0.92, 0.91 / 0.93, 0.79 / 0.88 against the
-      // reconstructions' 0.86, 0.55, 0.87, 0.84, 0.89. The reconstruction of rtwig_cloud (a twig
+      // reconstructions' 0.86, 0.56, 0.88, 0.94, 0.89. The reconstruction of rtwig_cloud (a twig
       // 1 m long) rose from 0.86 when the tips walked on to their last samples
       // (docs/reconstruction.md, The pipeline, step 7); on a 64 grid the wavelet tree of it is at
       // 0.88 of that, on a 128 grid at 0.99.
