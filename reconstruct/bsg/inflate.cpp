@@ -101,6 +101,9 @@ struct Editable {
   }
   double min_radius = 0;
   double tolerance = 0;  // a degree-2 collapse may move the branch by this much at least
+  // Per vertex: the positions of the vertices its degree-2 collapses took in, over every round
+  // (null: only the two current positions are checked).
+  std::vector<std::vector<Eigen::Vector3d>>* absorbed = nullptr;
   // Collapses edge (u, a), a a child of u, into u at the weighted midpoint (4.3).
   void merge(std::uint32_t u, std::uint32_t a, bool keep_a_position = false) {
     // The midpoint is weighted by the points each vertex stands for, so a merged vertex is the
@@ -174,11 +177,17 @@ std::size_t remove_covered(Editable& e, std::uint32_t u, double overlap) {
 // replaces the curve by its chord, which leaves the points it stands for.
 bool collapse_keeps_shape(const Editable& e, std::uint32_t u, std::uint32_t v, std::uint32_t w,
                           const Eigen::Vector3d& merged, double tolerance) {
-  for (const Eigen::Vector3d& old : {e.b.pos[v], e.b.pos[w]}) {
+  auto near = [&](const Eigen::Vector3d& old) {
     double d = point_segment_distance(old, e.b.pos[u], merged);
     for (std::uint32_t x : e.ch[w])
       d = std::min(d, point_segment_distance(old, merged, e.b.pos[x]));
-    if (d > tolerance) return false;
+    return d <= tolerance;
+  };
+  if (!near(e.b.pos[v]) || !near(e.b.pos[w])) return false;
+  if (e.absorbed) {
+    for (std::uint32_t x : {v, w})
+      for (const Eigen::Vector3d& old : (*e.absorbed)[x])
+        if (!near(old)) return false;
   }
   return true;
 }
@@ -201,6 +210,13 @@ std::size_t collapse_degree2(Editable& e, std::uint32_t v, double overlap) {
         keep_w ? e.b.pos[w]
                : Eigen::Vector3d((mv * e.b.pos[v] + mw * e.b.pos[w]) / std::max(mv + mw, 1e-300));
     if (!collapse_keeps_shape(e, u, v, w, target, std::max(e.b.radius[v], e.tolerance))) break;
+    if (e.absorbed) {
+      auto& av = (*e.absorbed)[v];
+      auto& aw = (*e.absorbed)[w];
+      av.push_back(e.b.pos[v]), av.push_back(e.b.pos[w]);
+      av.insert(av.end(), aw.begin(), aw.end());
+      aw.clear();
+    }
     e.merge(v, w, keep_w);
     ++merged;
   }
@@ -208,7 +224,14 @@ std::size_t collapse_degree2(Editable& e, std::uint32_t v, double overlap) {
 }
 
 // Re-indexes the surviving vertices in parent-first order.
-void compact(Editable& e) { e.b = depth_first(e.b, e.ch); }
+void compact(Editable& e) {
+  std::vector<std::uint32_t> old_of;
+  e.b = depth_first(e.b, e.ch, &old_of);
+  if (!e.absorbed) return;
+  std::vector<std::vector<Eigen::Vector3d>> moved(old_of.size());
+  for (std::size_t i = 0; i < old_of.size(); ++i) moved[i] = std::move((*e.absorbed)[old_of[i]]);
+  *e.absorbed = std::move(moved);
+}
 
 }  // namespace
 
@@ -277,11 +300,13 @@ void assign_radii(Bsg& bsg, double d_avg, double exponent, double root_radius) {
   for (double& r : bsg.radius) r *= s;
 }
 
-std::size_t collapse_overlaps(Bsg& bsg, double overlap, double min_radius, double tolerance) {
+std::size_t collapse_overlaps(Bsg& bsg, double overlap, double min_radius, double tolerance,
+                              std::vector<std::vector<Eigen::Vector3d>>* absorbed) {
   if (bsg.size() < 2) return 0;
   Editable e{bsg, children_of(bsg.parent), std::vector<std::uint8_t>(bsg.size(), 1)};
   e.min_radius = min_radius;
   e.tolerance = tolerance;
+  if (absorbed && absorbed->size() == bsg.size()) e.absorbed = absorbed;
   std::size_t merged = 0;
   for (std::uint32_t u = 0; u < bsg.size(); ++u) {
     if (!e.alive[u]) continue;
@@ -327,6 +352,7 @@ int inflate(Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
   double d_current = -1;
   // Collapsing moves vertices towards the branch axes, which raises d_avg, which widens the
   // cylinders; the loop runs to the fixed point where nothing more collapses (4.3).
+  std::vector<std::vector<Eigen::Vector3d>> absorbed(bsg.size());
   for (; rounds < 40; ++rounds) {
     importance_weights(bsg, params.own_weight);
     const double d_avg = params.root_radius > 0
@@ -334,7 +360,8 @@ int inflate(Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
                              : mean_sample_distance(bsg, samples, counts, params.edge_sample);
     assign_radii(bsg, d_avg, params.exponent, params.root_radius);
     d_current = params.root_radius > 0 ? -1 : d_avg;
-    if (collapse_overlaps(bsg, params.overlap, params.min_radius, params.tolerance) == 0) break;
+    if (collapse_overlaps(bsg, params.overlap, params.min_radius, params.tolerance, &absorbed) == 0)
+      break;
     d_current = -1;
   }
   if (prune_twigs(bsg, params.min_twig) > 0) d_current = -1;

@@ -30,8 +30,11 @@ void assign_radii(Bsg& bsg, double d_avg, double exponent, double root_radius = 
 
 // One sweep of edge removal and degree-2 collapse; returns the number of edges collapsed.
 // Cylinders thinner than min_radius are widened to it for the overlap test. A degree-2 collapse
-// must keep both removed positions within max(radius, tolerance) of the new polyline.
-std::size_t collapse_overlaps(Bsg& bsg, double overlap, double min_radius, double tolerance = 0);
+// must keep both removed positions within max(radius, tolerance) of the new polyline, and with
+// `absorbed` (one list per vertex, kept from call to call; inflate() passes one) every position
+// the two took in by earlier degree-2 collapses as well.
+std::size_t collapse_overlaps(Bsg& bsg, double overlap, double min_radius, double tolerance = 0,
+                              std::vector<std::vector<Eigen::Vector3d>>* absorbed = nullptr);
 
 // Removes twigs (leaf chains from a fork) shorter than min_length: scan noise that survived
 // the clustering. Returns the number of vertices removed.

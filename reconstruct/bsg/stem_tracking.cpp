@@ -336,9 +336,18 @@ StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
     const double r_base = b.radius[chain[first]];
     const int pieces =
         extend_down ? std::max(1, int(std::ceil(-below / std::max(2 * r_base, 6 * spacing)))) : 0;
+    // Down along the line fitted to the base's nodes on the axis (a direction over its last
+    // three radii, extrapolated a few metres down, tilted the root off the trunk).
+    Eigen::Vector3d mean, dir;
+    fit_line(b, base, mean, dir);
+    const bool fitted_line = base.size() >= 3 && dir.norm() > 0;
+    if (fitted_line && dir.dot(base_direction) < 0) dir = -dir;
+    const Eigen::Vector3d top =
+        fitted_line ? Eigen::Vector3d(mean + (b.pos[chain[first]] - mean).dot(dir) * dir)
+                    : b.pos[chain[first]];
+    const Eigen::Vector3d down = fitted_line ? dir : base_direction;
     for (int k = 0; k < pieces; ++k) {
-      full.axis.push_back(b.pos[chain[first]] +
-                          below * (1.0 - double(k) / pieces) * base_direction);
+      full.axis.push_back(top + below * (1.0 - double(k) / pieces) * down);
       full.radius.push_back(r_base);
       full.fitted.push_back(0);
     }

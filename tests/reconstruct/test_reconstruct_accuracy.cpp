@@ -78,8 +78,8 @@ TEST_CASE("reconstruct accuracy: synthetic tree scanned from one station", "[acc
 
 // The issue's targets (precision within 2 x radius >= 0.9, recall within 2 x radius >= 0.9,
 // total length within 20%) on the bundled grammar trees scanned from three stations, with the
-// default options. Measured (precision / recall / length): broadleaf 0.978 / 0.934 / 0.939,
-// conifer 0.978 / 0.928 / 0.973, weeping 0.925 / 0.931 / 1.004. The recalls were 0.904 / 0.818 /
+// default options. Measured (precision / recall / length): broadleaf 0.979 / 0.935 / 0.935,
+// conifer 0.979 / 0.931 / 0.975, weeping 0.961 / 0.963 / 1.002. The recalls were 0.904 / 0.818 /
 // 0.925 before the tips walked on to the last samples ahead of them (tip_extension.h), and the
 // conifer's 0.885 while the terrain layer took the drooping ends of its lowest whorls
 // (ground_surface.h). Deterministic (fixed grammar seed, scanner seed and reconstruction); the
@@ -119,8 +119,15 @@ TEST_CASE("reconstruct accuracy: bundled conifer grammar, three stations, defaul
   check_targets(scan_grammar("conifer.ramus", 3), 0.85);
 }
 
+// The weeping tree's whips from three stations: the issue's precision of 0.95 within 2 x radius.
+// Each degree-2 collapse kept the two vertices it joined within the branch's radius of the new
+// polyline, but not the vertices they had taken in before, in this round or an earlier one: on
+// the arching whips the chords came to lie 2-4 cm under the truth (radius 1.2 cm), precision
+// 0.925. Checked against every position a vertex took in (inflate.cpp): 0.961.
 TEST_CASE("reconstruct accuracy: bundled weeping grammar, three stations, defaults", "[accuracy]") {
-  check_targets(scan_grammar("weeping.ramus", 3), 0.9);
+  const scanner::HarnessResult r = scan_grammar("weeping.ramus", 3);
+  check_targets(r, 0.9);
+  CHECK(r.at_radius.precision >= 0.95);
 }
 
 // One station sees one side of the crown; the occluded half is missing, so the targets are not
