@@ -103,12 +103,11 @@ std::vector<Bsg> refined_trees(const Graph& g, const Forest& f,
 // Centre lines (docs/reconstruction.md): long edges split so that curved stems get cross-sections
 // of their own, then nodes onto the fitted axes of the wood and radii from the same fits.
 void centre_tree(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
-                 const std::vector<std::uint32_t>& counts, double voxel) {
+                 const std::vector<std::uint32_t>& counts, const PointIndex& index, double voxel) {
   CentreLineParams cp;
   cp.spacing = voxel;
   subdivide_long_edges(b, voxel, cp.min_hint_spacings * voxel);
   const std::vector<double> weight(counts.begin(), counts.end());
-  const PointIndex index(samples);
   const CentreLineResult fit = centre_line(b.pos, b.parent, b.radius, samples, index, weight, cp);
   smooth_fitted_radii(b.parent, fit, b.radius);
   if (fit.fitted_count == 0) return;
@@ -270,11 +269,14 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
     tp.root_radius = trunk_radius(samples[k], graph.pos[roots[k]], 0.5 * bp.slab, 2 * root_reach[k],
                                   scale.voxel);
     inflate(trees[k], samples[k], counts[k], tp);
-    if (o.centre_lines) centre_tree(trees[k], samples[k], counts[k], scale.voxel);
-    if (o.extend_tips) {
-      TipExtensionParams xp;
-      xp.spacing = scale.voxel;
-      extend_tips(trees[k], samples[k], PointIndex(samples[k]), xp);
+    if (o.centre_lines || o.extend_tips) {
+      const PointIndex index(samples[k]);  // both steps search the tree's samples
+      if (o.centre_lines) centre_tree(trees[k], samples[k], counts[k], index, scale.voxel);
+      if (o.extend_tips) {
+        TipExtensionParams xp;
+        xp.spacing = scale.voxel;
+        extend_tips(trees[k], samples[k], index, xp);
+      }
     }
     LeafParams lp{o.leaves,     o.min_leaves,
                   o.max_leaves, o.leaf_sphere > 0 ? o.leaf_sphere : 2 * scale.voxel,

@@ -27,6 +27,7 @@ std::size_t extend_tips(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
   const PointIndex edges(along);
   const std::vector<std::vector<std::uint32_t>> children = children_of(b.parent);
   std::vector<std::uint32_t> near;
+  std::vector<std::pair<double, std::uint32_t>> ahead;  // (distance ahead, sample)
   std::size_t moved_tips = 0;
   for (std::uint32_t v = 1; v < b.size(); ++v) {
     if (!children[v].empty() || b.parent[v] == kNone) continue;
@@ -44,7 +45,7 @@ std::size_t extend_tips(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
       near.clear();
       index.within(c, p.reach * s, near);
       double t_max = 0;
-      std::vector<std::pair<double, std::uint32_t>> ahead;
+      ahead.clear();
       for (std::uint32_t i : near) {
         const Eigen::Vector3d w = samples[i] - c;
         const double t = w.dot(d);
