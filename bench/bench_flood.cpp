@@ -1,7 +1,9 @@
 // Flood-fill skeletons against the BSG method, and branch merging (docs/flood-fill.md,
 // docs/branch-merging.md):
-//   bench_flood accuracy GRAMMAR...  grammar tree -> simulated scans (1 and 3 stations, noise
-//                                    0.3% of the height) -> BSG and flood -> scores and time
+//   bench_flood accuracy [--beam-divergence MRAD --beam-diameter D] GRAMMAR...
+//                                    grammar tree -> simulated scans (1 and 3 stations, range
+//                                    noise 5 mm; a beam of some width when given, as `ramus
+//                                    scan`) -> BSG and flood -> scores and time
 //   bench_flood time SCAN...         BSG and flood times on real scans
 //   bench_flood merge FILE...        a grammar tree (.ramus) or the flood skeleton of a scan:
 //                                    nodes and bark triangles against the Chamfer distance to the
@@ -9,12 +11,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <string>
 
-#include "mesh/tree_mesh.h"
 #include "compiler/grow.h"
 #include "formats/point_cloud_io.h"
+#include "mesh/tree_mesh.h"
 #include "reconstruct/flood/flood_skeleton.h"
 #include "reconstruct/merge/branch_merge.h"
 #include "tests/reconstruct/reconstruct_fixtures.h"
@@ -53,14 +56,14 @@ void print_row(const char* method, const std::string& path, int stations, std::s
 }
 
 // The accuracy harness of tests/support/harness.h, run for both methods on the same scan.
-void accuracy(const std::string& path) {
+void accuracy(const std::string& path, const scanner::HarnessCase& base) {
   // "thick-small" and "thick": the 8 m, 30 cm and the 14 m, 60 cm trunk trees of
   // tests/reconstruct/reconstruct_fixtures.h.
   const Skeleton truth = path == "thick-small" ? test::thick_tree(5, 8.0, 0.3)
                          : path == "thick"     ? test::thick_tree(11, 14.0, 0.6)
                                                : grow(path);
   for (int stations : {1, 3}) {
-    scanner::HarnessCase hc;
+    scanner::HarnessCase hc = base;
     hc.stations = stations;
     // flood-raw: the flood fill without centre lines.
     for (const char* method : {"bsg", "flood", "flood-raw"}) {
@@ -140,9 +143,15 @@ int main(int argc, char** argv) {
   }
   try {
     const std::string mode = argv[1];
+    scanner::HarnessCase beam;
     for (int i = 2; i < argc; ++i) {
-      if (mode == "accuracy") {
-        accuracy(argv[i]);
+      const std::string arg = argv[i];
+      if (mode == "accuracy" && arg == "--beam-divergence" && i + 1 < argc) {
+        beam.beam_divergence = 1e-3 * std::atof(argv[++i]);
+      } else if (mode == "accuracy" && arg == "--beam-diameter" && i + 1 < argc) {
+        beam.beam_diameter = std::atof(argv[++i]);
+      } else if (mode == "accuracy") {
+        accuracy(argv[i], beam);
       } else if (mode == "time") {
         time_scan(argv[i]);
       } else if (mode == "merge") {

@@ -5,14 +5,16 @@
 //   bench_reconstruct scene GRAMMAR N [--opt k=v]...  N trees of GRAMMAR scanned into one
 //                                            ~1M-point cloud
 // FLAGS (before the files they apply to): --noise S (metres), --density D, --leaves (scan the
-// leaf cards too), --opt name=value (a ReconstructOptions field, for parameter sweeps: voxel,
+// leaf cards too), --beam-divergence MRAD, --beam-diameter M, --range-resolution M,
+// --registration-error M (as `ramus scan`: a beam of some width, stations registered with an
+// error), --opt name=value (a ReconstructOptions field, for parameter sweeps: voxel,
 // voxel_spacings, voxel_floor, neighbours, max_gap, hidden_limb_reach, contraction, iterations,
-// overlap, min_branch, min_cylinder, ground_band, terrain), --stations N (only N stations instead
-// of 1 and 3), --dump PREFIX (write the truth and the reconstruction as skeleton JSON, the scan as
-// .xyz), --azimuth DEG (turn the tree by DEG about the vertical through its root before scanning:
-// the stations see another side of it), --repeat N (time: reconstruct each scan N times; cpu= is
-// the least CPU time, user + system of all threads, of one reconstruction). Prints one line per run
-// and the peak resident memory at the end.
+// overlap, min_branch, min_cylinder, ground_band, terrain, stray, centre_lines, extend_tips),
+// --stations N (only N stations instead of 1 and 3), --dump PREFIX (write the truth and the
+// reconstruction as skeleton JSON, the scan as .xyz), --azimuth DEG (turn the tree by DEG about the
+// vertical through its root before scanning: the stations see another side of it), --repeat N
+// (time: reconstruct each scan N times; cpu= is the least CPU time, user + system of all threads,
+// of one reconstruction). Prints one line per run and the peak resident memory at the end.
 #include <sys/resource.h>
 #include <time.h>
 
@@ -84,6 +86,8 @@ void set_option(ReconstructOptions& o, const std::string& kv) {
     o.extend_tips = v != 0;
   else if (k == "exponent")
     o.allometry_exponent = v;
+  else if (k == "stray")
+    o.remove_stray = v != 0;
   else if (k == "terrain")
     o.remove_terrain = v != 0;
   else
@@ -225,6 +229,14 @@ int main(int argc, char** argv) {
           c.noise = std::atof(argv[++i]);
         } else if (arg == "--density" && i + 1 < argc) {
           c.density = std::atof(argv[++i]);
+        } else if (arg == "--beam-divergence" && i + 1 < argc) {
+          c.beam_divergence = 1e-3 * std::atof(argv[++i]);
+        } else if (arg == "--beam-diameter" && i + 1 < argc) {
+          c.beam_diameter = std::atof(argv[++i]);
+        } else if (arg == "--range-resolution" && i + 1 < argc) {
+          c.range_resolution = std::atof(argv[++i]);
+        } else if (arg == "--registration-error" && i + 1 < argc) {
+          c.registration_error = std::atof(argv[++i]);
         } else if (arg == "--opt" && i + 1 < argc) {
           set_option(g_options, argv[++i]);
         } else if (arg == "--stations" && i + 1 < argc) {

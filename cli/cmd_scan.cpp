@@ -1,6 +1,7 @@
 // ramus scan FILE -o OUT.ply|.xyz|.las|.laz [--from x,y,z]... [--noise S] [--density D]
-// [--max-range R]
-//                 [--leaves] [--truth OUT.json] [--seed S] [-n N] [-D name=value]...
+//                 [--max-range R] [--beam-divergence MRAD] [--beam-diameter D]
+//                 [--range-resolution R] [--registration-error S] [--leaves] [--truth OUT.json]
+//                 [--seed S] [-n N] [-D name=value]...
 // ramus scan FILE... --forest N|--layout L.json --area WxH -o OUT [--station-spacing D] ...
 // Grows the grammar, meshes its tree and ray casts it from the scanner stations: a simulated
 // terrestrial laser scan with a known skeleton, for testing reconstruction
@@ -32,13 +33,28 @@ struct ScanArgs {
   std::string output, truth;
   std::vector<std::string> from;
   double noise = 0.0, density = 2000.0, max_range = 0.0, angular_step_degrees = 0.0;
+  double beam_divergence_mrad = 0.0, beam_diameter = 0.0, range_resolution = 0.0;
+  double registration_error = 0.0;
   bool leaves = false;
   // Forest plots.
   int forest = 0;
   std::string area, layout;
   double station_spacing = 10.0;
-  bool given_density = false, given_spacing = false;
+  bool given_density = false, given_spacing = false, given_range_resolution = false;
 };
+
+// The beam and the registration (ScanOptions), the same for one tree and for a plot.
+void set_beam(const ScanArgs& a, scanner::ScanOptions& o) {
+  if (a.given_range_resolution && !(a.beam_divergence_mrad > 0 || a.beam_diameter > 0)) {
+    throw UserError(
+        "--range-resolution applies to a beam of some width: give --beam-divergence or "
+        "--beam-diameter");
+  }
+  o.beam_divergence = a.beam_divergence_mrad * 1e-3;
+  o.beam_diameter = a.beam_diameter;
+  o.range_resolution = a.range_resolution;
+  o.registration_error = a.registration_error;
+}
 
 void write_cloud(const std::string& path, const PointCloud& cloud) {
   const std::string ext = std::filesystem::path(path).extension().string();
@@ -137,6 +153,7 @@ int run_forest_scan(const ScanArgs& a, const GlobalOptions& global) {
   fo.scan.max_range = a.max_range;
   fo.scan.leaves = a.leaves;
   fo.scan.seed = plot_seed;
+  set_beam(a, fo.scan);
   fo.scan.angular_step = (a.angular_step_degrees > 0 ? a.angular_step_degrees : 0.1) * M_PI / 180;
   scanner::ScanResult r;
   try {
@@ -180,6 +197,10 @@ int run_scan(const ScanArgs& a, const GlobalOptions& global) {
   o.leaves = a.leaves;
   o.angular_step = a.angular_step_degrees * M_PI / 180;
   o.seed = a.grow.seed.value_or(1);
+  set_beam(a, o);
+  if (o.registration_error > 0 && o.from.size() < 2) {
+    throw UserError("--registration-error applies to scans from two or more --from stations");
+  }
   const std::optional<Skeleton> skeleton = grow_for_cli(a.grow);
   if (!skeleton) return 1;
   scanner::ScanResult r;
@@ -233,6 +254,20 @@ void add_scan(CLI::App& app, const GlobalOptions& global, std::function<int()>& 
   sub->add_option("--angular-step", args->angular_step_degrees,
                   "degrees between rays (default: from --density; 0.1 with --forest)")
       ->check(CLI::PositiveNumber);
+  sub->add_option("--beam-divergence", args->beam_divergence_mrad,
+                  "full angle of the beam in milliradians (0.3-0.5 for survey scanners; default "
+                  "0: a line, no mixed returns at edges)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--beam-diameter", args->beam_diameter,
+                  "width of the beam where it leaves the scanner (e.g. 0.007)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--range-resolution", args->range_resolution,
+                  "surfaces in one footprint closer than this give one mixed echo (default 0: "
+                  "every footprint gives one echo, as a phase-shift scanner)")
+      ->check(CLI::NonNegativeNumber);
+  sub->add_option("--registration-error", args->registration_error,
+                  "each station after the first shifted by this standard deviation per axis")
+      ->check(CLI::NonNegativeNumber);
   sub->add_flag("--leaves", args->leaves, "scan the leaf cards too (default: wood only)");
   output_path(sub->add_option("--truth", args->truth,
                               "also write the skeleton as JSON (a forest: one root per tree)"));
@@ -250,6 +285,7 @@ void add_scan(CLI::App& app, const GlobalOptions& global, std::function<int()>& 
   sub->callback([args, sub, &global, &run] {
     args->given_density = sub->count("--density") > 0;
     args->given_spacing = sub->count("--station-spacing") > 0;
+    args->given_range_resolution = sub->count("--range-resolution") > 0;
     run = [args, &global] { return run_scan(*args, global); };
   });
 }

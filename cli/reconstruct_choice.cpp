@@ -26,6 +26,7 @@ ReconstructResult run_reconstruction(const PointCloud& cloud, const ReconstructC
   if (choice.method == "flood") {
     flood::FloodOptions fo;
     fo.voxel_size = choice.voxel;
+    fo.remove_stray = base.remove_stray;
     return flood::flood_reconstruct(cloud, fo);
   }
   return reconstruct(cloud, reconstruct_options(choice, base));

@@ -59,6 +59,9 @@ struct ReconstructOptions {
   double min_tree_separation = 0;  // weaker base clusters nearer than this to a stronger one are
                                    // low branches of its tree; auto: 10% of the height
   std::vector<Vec3> roots;  // world positions of tree bases; when set, base detection is skipped
+  // Points with fewer than two others within four voxels are ignored (docs/reconstruction.md,
+  // "Stray points": mixed-pixel returns between a twig's edge and what lies behind it).
+  bool remove_stray = true;
 
   // Refinement (4.2).
   int max_iterations = 2;          // Dijkstra + refinement rounds at most (paper: 2-3 suffice)
@@ -99,6 +102,7 @@ struct ReconstructCounts {
   std::size_t dropped_points = 0;  // non-finite coordinates
   std::size_t outlier_points = 0;  // far outside the rest of the cloud (ignored)
   std::size_t terrain_points = 0;
+  std::size_t stray_points = 0;  // alone in the air (ReconstructOptions::remove_stray)
   std::size_t graph_vertices = 0;
   std::size_t graph_edges = 0;
   std::size_t bridged_gaps = 0;      // components joined through their closest pair

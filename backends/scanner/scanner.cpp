@@ -43,6 +43,60 @@ Window window_of(const Vec3& s, const Vec3& lo, const Vec3& hi) {
   return w;
 }
 
+// One return of a beam: its range along the beam's centre line and the triangle that made it.
+struct Echo {
+  double range;
+  std::uint32_t triangle;
+};
+
+// The echoes of the beam along d (azimuth az, elevation el) from s (ScanOptions, "The beam"):
+// seven rays through its footprint, the centre and six on the circle that halves the area of
+// the ring outside the centre's share (radius sqrt((1 + 1/7) / 2) of the footprint's), each an
+// equal share of the footprint; their hits grouped along the beam; one echo per group covering
+// enough of the footprint, at the group's mean range. `hits` is scratch.
+void beam_echoes(const TriangleBvh& bvh, const Vec3& s, const Vec3& d, double az, double el,
+                 const ScanOptions& o, double limit, std::vector<Echo>& hits,
+                 std::vector<Echo>& echoes) {
+  constexpr int kRays = 7;
+  const double ring = std::sqrt((1.0 + 1.0 / kRays) / 2.0);
+  const Vec3 e1{-std::sin(az), std::cos(az), 0.0};
+  const Vec3 e2{-std::sin(el) * std::cos(az), -std::sin(el) * std::sin(az), std::cos(el)};
+  hits.clear();
+  for (int k = 0; k < kRays; ++k) {
+    Vec3 across{0, 0, 0};
+    if (k > 0) {
+      const double a = (k - 1) * M_PI / 3;
+      across = (e1 * std::cos(a) + e2 * std::sin(a)) * ring;
+    }
+    const Vec3 origin = s + across * (0.5 * o.beam_diameter);
+    const Vec3 dir = normalized(d + across * (0.5 * o.beam_divergence));
+    Hit h;
+    if (!bvh.intersect(origin, dir, 1e-9, limit, h)) continue;
+    hits.push_back({dot(origin + dir * h.t - s, d), h.triangle});
+  }
+  std::sort(hits.begin(), hits.end(), [](const Echo& a, const Echo& b) {
+    return a.range < b.range || (a.range == b.range && a.triangle < b.triangle);
+  });
+  for (std::size_t i = 0; i < hits.size();) {
+    std::size_t j = i + 1;
+    while (j < hits.size() &&
+           (o.range_resolution <= 0 || hits[j].range - hits[j - 1].range < o.range_resolution))
+      ++j;
+    if (double(j - i) >= o.min_echo_fraction * kRays) {
+      double sum = 0;
+      for (std::size_t k = i; k < j; ++k) sum += hits[k].range;
+      const double mean = sum / double(j - i);
+      // The triangle of the hit nearest the mean stands for the echo (leaf or bark).
+      std::size_t best = i;
+      for (std::size_t k = i; k < j; ++k) {
+        if (std::abs(hits[k].range - mean) < std::abs(hits[best].range - mean)) best = k;
+      }
+      echoes.push_back({mean, hits[best].triangle});
+    }
+    i = j;
+  }
+}
+
 void scan_station(const TriangleBvh& bvh, const Vec3& s, std::uint64_t station,
                   const ScanOptions& o, std::vector<Vec3>& out, std::vector<std::uint32_t>& tris,
                   std::uint64_t& rays) {
@@ -55,6 +109,7 @@ void scan_station(const TriangleBvh& bvh, const Vec3& s, std::uint64_t station,
   const double solid = (w.az1 - w.az0) * (w.el1 - w.el0);
   if (solid / (step * step) > double(o.max_rays)) step = std::sqrt(solid / double(o.max_rays));
   const auto rows = std::size_t(std::ceil((w.el1 - w.el0) / step)) + 1;
+  const bool beam = o.beam_divergence > 0 || o.beam_diameter > 0;
   std::vector<std::vector<Vec3>> hits(rows);
   std::vector<std::vector<std::uint32_t>> hit_tris(rows);
   std::vector<std::uint64_t> cast(rows, 0);
@@ -63,18 +118,27 @@ void scan_station(const TriangleBvh& bvh, const Vec3& s, std::uint64_t station,
     // Equal spacing on the sphere: azimuth steps widen by 1/cos(elevation).
     const double az_step = step / std::max(std::cos(el), 1e-3);
     const auto cols = std::size_t(std::ceil((w.az1 - w.az0) / az_step)) + 1;
+    std::vector<Echo> echoes, footprint;
     for (std::size_t c = 0; c < cols; ++c) {
       const double az = w.az0 + double(c) * az_step;
       const Vec3 d{std::cos(el) * std::cos(az), std::cos(el) * std::sin(az), std::sin(el)};
       ++cast[r];
-      Hit h;
       const double limit = o.max_range > 0 ? o.max_range : 1e300;
-      if (!bvh.intersect(s, d, 1e-9, limit, h)) continue;
+      echoes.clear();
+      if (beam) {
+        beam_echoes(bvh, s, d, az, el, o, limit, footprint, echoes);
+      } else {
+        Hit h;
+        if (bvh.intersect(s, d, 1e-9, limit, h)) echoes.push_back({h.t, h.triangle});
+      }
+      if (echoes.empty()) continue;
       Rng rng = Rng::stream(o.seed, station, (std::uint64_t(r) << 32) | c);
-      if (h.triangle >= o.sparse_from && rng.uniform01() >= o.sparse_keep) continue;
-      const double t = o.noise > 0 ? h.t + rng.normal(0, o.noise) : h.t;
-      hits[r].push_back(s + d * t);
-      hit_tris[r].push_back(h.triangle);
+      for (const Echo& e : echoes) {
+        if (e.triangle >= o.sparse_from && rng.uniform01() >= o.sparse_keep) continue;
+        const double t = o.noise > 0 ? e.range + rng.normal(0, o.noise) : e.range;
+        hits[r].push_back(s + d * t);
+        hit_tris[r].push_back(e.triangle);
+      }
     }
   });
   for (std::size_t r = 0; r < rows; ++r) {
@@ -95,6 +159,15 @@ ScanResult scan_triangles(const std::vector<Vec3>& vertices,
   for (const Vec3& v : vertices) {
     if (!is_finite(v)) throw ScanError("the mesh has a non-finite vertex");
   }
+  for (const double v :
+       {o.noise, o.beam_divergence, o.beam_diameter, o.range_resolution, o.registration_error}) {
+    if (!(v >= 0) || !std::isfinite(v)) {
+      throw ScanError("the noise, beam and registration settings must be finite and not negative");
+    }
+  }
+  if (!(o.min_echo_fraction > 0 && o.min_echo_fraction <= 1)) {
+    throw ScanError("the least share of a footprint that returns an echo must be in (0, 1]");
+  }
   const TriangleBvh bvh(vertices, indices);
   Vec3 lo, hi;
   bvh.bounds(lo, hi);
@@ -108,7 +181,15 @@ ScanResult scan_triangles(const std::vector<Vec3>& vertices,
   std::vector<Vec3> points;
   for (std::size_t k = 0; k < stations.size(); ++k) {
     if (!is_finite(stations[k])) throw ScanError("a scanner position is not finite");
+    const std::size_t first = points.size();
     scan_station(bvh, stations[k], k, o, points, res.triangle, res.rays);
+    if (k > 0 && o.registration_error > 0) {
+      // One rigid shift per station, from its own stream (no ray of the station uses it).
+      Rng rng = Rng::stream(o.seed, k, ~std::uint64_t(0));
+      const Vec3 shift{rng.normal(0, o.registration_error), rng.normal(0, o.registration_error),
+                       rng.normal(0, o.registration_error)};
+      for (std::size_t i = first; i < points.size(); ++i) points[i] = points[i] + shift;
+    }
   }
   res.cloud.offset = Vec3{std::round((lo.x + hi.x) / 2), std::round((lo.y + hi.y) / 2),
                           std::round((lo.z + hi.z) / 2)};

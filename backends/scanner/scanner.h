@@ -1,7 +1,9 @@
 // The simulated terrestrial laser scanner: ray casts a tree's mesh from one or more stations on
 // a regular angular grid, with occlusion (nearest hit only), the density falloff with range that
 // angular sampling implies (spacing grows linearly with range), an optional range limit, and
-// Gaussian range noise. Used to make clouds with a known skeleton for the reconstruction tests.
+// Gaussian range noise; optionally a beam of finite width (mixed-pixel echoes at edges, where a
+// footprint covers a branch and what lies behind it) and stations that are registered with an
+// error. Used to make clouds with a known skeleton for the reconstruction tests.
 #pragma once
 
 #include <cstdint>
@@ -28,6 +30,22 @@ struct ScanOptions {
   // ground of a forest plot, which would otherwise outnumber the trees' points many times).
   std::uint32_t sparse_from = 0xffffffffu;
   double sparse_keep = 1.0;
+  // The beam. A real beam is a narrow cone: its footprint at range t is beam_diameter +
+  // t * beam_divergence across (both 0: a line, one hit per ray). A footprint is sampled by
+  // seven rays (its centre and six around it, an equal share of its area each); their hits
+  // group into echoes, hits less than range_resolution apart along the beam in one echo (0: all
+  // hits of a beam are one echo, as with a phase-shift scanner), and each echo that covers at
+  // least min_echo_fraction of the footprint returns one point on the beam's centre line at its
+  // hits' mean range. Where a branch's edge and a surface behind it share a footprint the point
+  // lies between them (a "mixed pixel"), and a branch's outline widens by what a partly covered
+  // footprint still returns. docs/reconstruction.md, "Accuracy".
+  double beam_divergence = 0.0;  // radians, full angle
+  double beam_diameter = 0.0;    // at the scanner's exit
+  double range_resolution = 0.0;
+  double min_echo_fraction = 0.25;
+  // Each station after the first is shifted by a random offset of this standard deviation per
+  // axis (the co-registration error of a multi-station scan; the first station is the frame).
+  double registration_error = 0.0;
   std::uint64_t max_rays = 200'000'000;  // per station; the angular step grows to respect it
   std::uint64_t seed = 1;
 };

@@ -98,6 +98,13 @@ std::size_t return_nodes_behind_forks(Bsg& b, double min_radius) {
   return moved;
 }
 
+// A chain that winds over a stem's bark steps back along its chord by at most about the stem's
+// diameter once centred (over the harness trees at most 2.2 of the chain's largest radii); one
+// that runs out along a branch and back along another (two whips joined at their tips: 29 radii
+// on the weeping tree from one station) is not a winding stem, and sorting it interleaves the two
+// branches' nodes into a comb between them.
+constexpr double kMaxStepBack = 3.0;
+
 std::size_t order_chains_along_axes(Bsg& b, double min_radius) {
   const std::size_t n = b.size();
   if (n < 3) return 0;
@@ -121,13 +128,17 @@ std::size_t order_chains_along_axes(Bsg& b, double min_radius) {
       const Eigen::Vector3d u = chord / length;
       t.clear();
       bool thick = false, straight = true;
+      double ahead = -std::numeric_limits<double>::infinity(), back = 0, widest = 0;
       for (std::uint32_t v : inner) {
         const Eigen::Vector3d q = b.pos[v] - a;
         t.push_back(q.dot(u));
         thick |= b.radius[v] >= min_radius;
         straight &= (q - t.back() * u).norm() <= 0.5 * length;
+        ahead = std::max(ahead, t.back());
+        back = std::max(back, ahead - t.back());
+        widest = std::max(widest, b.radius[v]);
       }
-      if (!thick || !straight || std::is_sorted(t.begin(), t.end())) continue;
+      if (!thick || !straight || back > kMaxStepBack * widest || back == 0) continue;
       idx.resize(inner.size());
       std::iota(idx.begin(), idx.end(), 0u);
       std::stable_sort(idx.begin(), idx.end(),

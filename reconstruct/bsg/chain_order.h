@@ -20,8 +20,9 @@ namespace ramus::bsg {
 // its end: the inner nodes' positions and radii are sorted by their coordinate along the chord
 // (the nodes, their parents and every other field stay). Only chains whose inner nodes lie
 // within half the chord's length of it are sorted: such a smooth chain turns by less than 180
-// degrees, and its points are then in order along the chord. Returns the number of chains
-// sorted.
+// degrees, and its points are then in order along the chord. Chains that step back along the
+// chord by more than three of their largest radii are left as they are: they turn back (two
+// branches joined at their tips), they do not wind. Returns the number of chains sorted.
 std::size_t order_chains_along_axes(Bsg& bsg, double min_radius);
 
 // Chains that start behind their fork. On a thick stem the BSG's paths can reach a fork from

@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <string>
 
 #include "reconstruct/bsg/axis_projection.h"
 #include "reconstruct/bsg/bases.h"
@@ -19,6 +20,7 @@
 #include "reconstruct/bsg/output.h"
 #include "reconstruct/bsg/refine.h"
 #include "reconstruct/bsg/stem_tracking.h"
+#include "reconstruct/bsg/stray_points.h"
 #include "reconstruct/bsg/tip_extension.h"
 #include "reconstruct/bsg/trunk_radius.h"
 #include "reconstruct/reconstruct.h"
@@ -147,6 +149,15 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
 
   // 4.1: tree bases and terrain.
   auto t = Clock::now();
+  if (o.remove_stray) {
+    // Before the bases: they are found on the points the graph is built from. The voxel of the
+    // whole cloud sets the reach (the trees' own is chosen after terrain removal, below).
+    res.counts.stray_points = drop_stray_points(pts, keep, 4 * choose_scale(pts, keep, o).voxel);
+    if (res.counts.stray_points > 0) {
+      res.notes.push_back("ignored " + std::to_string(res.counts.stray_points) +
+                          " stray point(s): fewer than two others within four voxels");
+    }
+  }
   Bases bases;
   if (o.roots.empty()) {
     bases = find_bases(pts, keep, base_params(o, scale));
@@ -161,7 +172,7 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (bases.terrain[i]) keep[i] = 0, ++res.counts.terrain_points;
   }
-  if (res.counts.terrain_points < finite_points.count) {
+  if (res.counts.terrain_points + res.counts.stray_points < finite_points.count) {
     scale.voxel = choose_scale(pts, keep, o).voxel;
     res.voxel_size = scale.voxel;
   }

@@ -84,19 +84,27 @@ constexpr double kBaseWindow = 10.0;
 constexpr double kOnLine = 0.25;
 constexpr double kOnChord = 0.5;
 
-// The least-squares line through the nodes `line` of `b`: their centroid and principal
-// direction (zero when they do not span one).
-void fit_line(const Bsg& b, const std::vector<std::uint32_t>& line, Eigen::Vector3d& mean,
+// The least-squares line through `points`: their centroid and principal direction (zero when
+// they do not span one).
+void fit_line(const std::vector<Eigen::Vector3d>& points, Eigen::Vector3d& mean,
               Eigen::Vector3d& dir) {
   mean.setZero();
   dir.setZero();
-  if (line.empty()) return;
-  for (std::uint32_t v : line) mean += b.pos[v];
-  mean /= double(line.size());
+  if (points.empty()) return;
+  for (const Eigen::Vector3d& p : points) mean += p;
+  mean /= double(points.size());
   Eigen::Matrix3d cov = Eigen::Matrix3d::Zero();
-  for (std::uint32_t v : line) cov += (b.pos[v] - mean) * (b.pos[v] - mean).transpose();
+  for (const Eigen::Vector3d& p : points) cov += (p - mean) * (p - mean).transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(cov);
   if (eig.eigenvalues()(2) > 0) dir = eig.eigenvectors().col(2);
+}
+
+// The same through the nodes `line` of `b`.
+void fit_line(const Bsg& b, const std::vector<std::uint32_t>& line, Eigen::Vector3d& mean,
+              Eigen::Vector3d& dir) {
+  std::vector<Eigen::Vector3d> points;
+  for (std::uint32_t v : line) points.push_back(b.pos[v]);
+  fit_line(points, mean, dir);
 }
 
 std::vector<std::uint32_t> base_on_axis(const Bsg& b, const std::vector<std::uint32_t>& run,
@@ -208,14 +216,21 @@ StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
   }
   if (run == 0) return t;
   // The base's nodes on one axis (base_on_axis); the track starts from the last of them. A run
-  // whose last node is off that axis, still fitted, goes on along another stem: the trunk's chain
-  // turned into a limb at a fork (thick_oak from one station at 120 degrees: the run's last three
+  // that goes on off that axis for two fitted nodes or more goes on along another stem: the
+  // trunk's chain turned into a limb at a fork (thick_oak from one station at 120 degrees: 46
   // nodes on a 27 cm limb), and the base is taken as it is, as the track's start has always been
-  // (a track from the last node on the axis, below the fork, spanned the stems that leave it with
-  // the trunk's radius and went 0.3 m off the leader).
+  // (a track from the last node on the axis, below the fork, spanned the stems that leave it
+  // with the trunk's radius and went 0.3 m off the leader). One fitted node off the axis at the
+  // run's end is one cross-section, cut through the base of a whorl's branch the chain stepped
+  // onto (treels_spruce once its stray points were ignored: one node 0.27 m off its 12 cm trunk,
+  // and a track from it stopped after four pieces), and the track starts on the axis.
   const std::vector<std::uint32_t> run_nodes(chain.begin() + first, chain.begin() + run);
   std::vector<std::uint32_t> base = base_on_axis(b, run_nodes, spacing);
-  if (std::find(base.begin(), base.end(), run_nodes.back()) == base.end()) base = run_nodes;
+  const std::size_t tail =
+      base.empty() ? run_nodes.size()
+                   : std::size_t(std::find(run_nodes.rbegin(), run_nodes.rend(), base.back()) -
+                                 run_nodes.rbegin());
+  if (tail >= 2) base = run_nodes;
   const bool wandered = base.size() < run_nodes.size();
   const std::uint32_t s = base.back();
   double r = b.radius[s];
@@ -336,10 +351,18 @@ StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
     const double r_base = b.radius[chain[first]];
     const int pieces =
         extend_down ? std::max(1, int(std::ceil(-below / std::max(2 * r_base, 6 * spacing)))) : 0;
-    // Down along the line fitted to the base's nodes on the axis (a direction over its last
-    // three radii, extrapolated a few metres down, tilted the root off the trunk).
+    // Down along the line fitted to the base's nodes on the axis and the track's fitted points
+    // within 20 base radii of its start (a direction over its last three radii, extrapolated a
+    // few metres down, tilted the root off the trunk; a base of a metre, its lowest fits widened
+    // by the flare, did too: treels_spruce's root 0.18 m off its trunk).
+    std::vector<Eigen::Vector3d> stretch;
+    for (std::uint32_t v : base) stretch.push_back(b.pos[v]);
+    for (std::size_t j = 0; j < t.axis.size(); ++j) {
+      if ((t.axis[j] - b.pos[base.front()]).norm() > 20 * r_base) break;
+      if (t.fitted[j]) stretch.push_back(t.axis[j]);
+    }
     Eigen::Vector3d mean, dir;
-    fit_line(b, base, mean, dir);
+    fit_line(stretch, mean, dir);
     const bool fitted_line = base.size() >= 3 && dir.norm() > 0;
     if (fitted_line && dir.dot(base_direction) < 0) dir = -dir;
     const Eigen::Vector3d top =

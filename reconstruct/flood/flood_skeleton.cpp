@@ -12,6 +12,7 @@
 #include "reconstruct/bsg/centre_line.h"
 #include "reconstruct/bsg/finite_points.h"
 #include "reconstruct/bsg/kdtree.h"
+#include "reconstruct/bsg/stray_points.h"
 #include "reconstruct/flood/line_fit.h"
 #include "reconstruct/flood/voxel_grid.h"
 
@@ -420,6 +421,16 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
     return res;
   }
   const double height = std::max(hi.z - lo.z, 1e-3 * extent);
+  if (o.remove_stray) {
+    // Mixed-pixel returns alone in the air (docs/reconstruction.md, Stray points): the flood
+    // takes each into its tree's layers and grows a branch to it.
+    const double spacing = std::max(median_spacing(epts, keep), 1e-3 * height);
+    res.counts.stray_points = bsg::drop_stray_points(epts, keep, 4 * spacing);
+    if (res.counts.stray_points > 0) {
+      res.notes.push_back("ignored " + std::to_string(res.counts.stray_points) +
+                          " stray point(s): fewer than two others within four point spacings");
+    }
+  }
 
   // Tree bases and terrain, with the BSG pipeline's default scales (Livny et al. 4.1).
   auto t = Clock::now();
@@ -446,7 +457,7 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
     res.timings.total = seconds_since(start);
     return res;
   }
-  if (res.counts.terrain_points == finite) {
+  if (res.counts.terrain_points + res.counts.stray_points == finite) {
     res.notes.push_back("no points remain after terrain removal");
     res.timings.total = seconds_since(start);
     return res;

@@ -56,6 +56,9 @@ struct FloodOptions {
   // Centre lines: nodes moved onto circles fitted to their cross-sections, radii from the fits
   // (reconstruct/bsg/centre_line.h; docs/reconstruction.md).
   bool centre_lines = true;
+  // Points with fewer than two others within four point spacings (at least 1/1000 of the height)
+  // are ignored before the bases, as in ReconstructOptions::remove_stray.
+  bool remove_stray = true;
   // Tree bases: as in ReconstructOptions; `roots` (world positions) skips base detection.
   bool remove_terrain = true;
   std::vector<Vec3> roots;

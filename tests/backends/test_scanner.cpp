@@ -1,4 +1,5 @@
-// The simulated scanner: sampling density, occlusion, noise, determinism and bad input.
+// The simulated scanner: sampling density, occlusion, noise, a beam of some width (mixed
+// echoes), stations registered with an error, determinism and bad input.
 #include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -107,6 +108,74 @@ TEST_CASE("scanner: range noise is Gaussian and seeded", "[scanner]") {
   CHECK_FALSE(c.cloud.positions == a.cloud.positions);
 }
 
+TEST_CASE("scanner: a wide beam returns mixed points between a rod's edge and the wall behind",
+          "[scanner]") {
+  // A 2 cm rod 5 m away, a wall 0.5 m behind it; a 4 mrad beam is 2 cm wide at the rod.
+  std::vector<Vec3> v;
+  std::vector<std::uint32_t> idx;
+  add_wall(v, idx, -0.01, 5, -0.5, 0.02, 1);
+  add_wall(v, idx, -1, 5.5, -1, 2, 2);
+  ScanOptions o;
+  o.from = {{0, 0, 0}};
+  o.density = 20000;
+  auto between = [](const scanner::ScanResult& r) {
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < r.cloud.size(); ++i) {
+      const double y = r.cloud.world(i).y;
+      n += y > 5.02 && y < 5.48 ? 1 : 0;
+    }
+    return n;
+  };
+  auto widest_on_rod = [](const scanner::ScanResult& r) {
+    double x = 0;
+    for (std::size_t i = 0; i < r.cloud.size(); ++i) {
+      const Vec3 p = r.cloud.world(i);
+      if (p.y < 5.02) x = std::max(x, std::abs(p.x));
+    }
+    return x;
+  };
+  const auto line = scanner::scan_triangles(v, idx, o);
+  CHECK(between(line) == 0);
+  CHECK(widest_on_rod(line) <= 0.01 + 1e-6);
+  o.beam_divergence = 0.004;
+  const auto mixed = scanner::scan_triangles(v, idx, o);
+  // One echo per beam: where the footprint covers the rod's edge and the wall, the point lies
+  // between them.
+  CHECK(between(mixed) > 20);
+  const auto again = scanner::scan_triangles(v, idx, o);
+  CHECK(again.cloud.positions == mixed.cloud.positions);
+  // Echoes 0.5 m apart are parted by a 0.1 m range resolution: no point between, and a beam on
+  // the edge returns from both surfaces.
+  o.range_resolution = 0.1;
+  const auto parted = scanner::scan_triangles(v, idx, o);
+  CHECK(between(parted) == 0);
+  CHECK(parted.cloud.size() > line.cloud.size());
+  // A footprint that covers a little of the rod still returns from it: the rod looks wider.
+  CHECK(widest_on_rod(parted) > 0.012);
+  CHECK(widest_on_rod(parted) < 0.02);
+}
+
+TEST_CASE("scanner: stations after the first are shifted by the registration error", "[scanner]") {
+  std::vector<Vec3> v;
+  std::vector<std::uint32_t> idx;
+  add_wall(v, idx, -0.5, 10, -0.5, 1, 1);
+  ScanOptions o;
+  o.from = {{0, 0, 0}};
+  o.density = 1000;
+  const std::size_t first = scanner::scan_triangles(v, idx, o).cloud.size();
+  o.from.push_back({0.3, 0, 0});
+  o.registration_error = 0.02;
+  const auto r = scanner::scan_triangles(v, idx, o);
+  REQUIRE(r.cloud.size() > first + 100);
+  for (std::size_t i = 0; i < first; ++i) CHECK(std::abs(r.cloud.world(i).y - 10) < 1e-4);
+  // The second station's wall is one rigid shift away from the first's.
+  const double shift = r.cloud.world(first).y - 10;
+  CHECK(std::abs(shift) > 1e-4);
+  for (std::size_t i = first; i < r.cloud.size(); ++i) {
+    CHECK(std::abs(r.cloud.world(i).y - 10 - shift) < 1e-4);
+  }
+}
+
 TEST_CASE("scanner: a skeleton is scanned on its bark", "[scanner]") {
   Skeleton s;
   SkeletonNode root;
@@ -165,6 +234,17 @@ TEST_CASE("scanner: bad input gives clear errors", "[scanner]") {
   ScanOptions o;
   CHECK_THROWS_AS(scanner::scan_triangles({}, {}, o), scanner::ScanError);
   CHECK_THROWS_AS(scanner::scan_triangles({{0, 0, 0}}, {0, 1, 2}, o), scanner::ScanError);
+  std::vector<Vec3> v;
+  std::vector<std::uint32_t> idx;
+  add_wall(v, idx, -0.5, 10, -0.5, 1, 1);
+  o.beam_divergence = -1e-3;
+  CHECK_THROWS_WITH(scanner::scan_triangles(v, idx, o), Catch::Contains("not negative"));
+  o.beam_divergence = 0;
+  o.registration_error = std::nan("");
+  CHECK_THROWS_AS(scanner::scan_triangles(v, idx, o), scanner::ScanError);
+  o.registration_error = 0;
+  o.min_echo_fraction = 0;
+  CHECK_THROWS_WITH(scanner::scan_triangles(v, idx, o), Catch::Contains("(0, 1]"));
   CHECK(scanner::parse_position("1,2.5,-3") == Vec3{1, 2.5, -3});
   CHECK_THROWS_WITH(scanner::parse_position("1,2"), Catch::Contains("x,y,z"));
   CHECK_THROWS_AS(scanner::parse_position("1,2,3,4"), scanner::ScanError);

@@ -65,6 +65,28 @@ TEST_CASE("chain order: a chain that runs up and down its stem is put in order",
   CHECK(edges_down(b, 0.05) == 2);
 }
 
+TEST_CASE("chain order: a chain that turns back along another branch is left alone",
+          "[reconstruct]") {
+  // Out along x to 2 m, then back 5 cm above it to 1.1 m (two 2 cm whips joined at their tips,
+  // as the BSG joins them where a scan from one side saw neither end). Every node lies near the
+  // chord's line, but sorting along it would lace the two whips together.
+  std::vector<Eigen::Vector3d> pos{{0, 0, 0}};
+  std::vector<std::uint32_t> parent{kNone};
+  for (int k = 1; k <= 10; ++k) pos.emplace_back(0.2 * k, 0, 0), parent.push_back(k - 1);
+  for (int k = 1; k <= 9; ++k) {
+    pos.emplace_back(2.0 - 0.1 * k, 0, 0.05);
+    parent.push_back(std::uint32_t(pos.size() - 2));
+  }
+  const bsg::Bsg given = make_bsg(pos, parent, 0.02);
+  bsg::Bsg b = given;
+  CHECK(bsg::order_chains_along_axes(b, 0.01) == 0);
+  CHECK(b.pos == given.pos);
+  // The same chain on a stem ten times as thick steps back by less than two of its diameters:
+  // a stem winding over its bark, put in order.
+  b = make_bsg(pos, parent, 0.4);
+  CHECK(bsg::order_chains_along_axes(b, 0.01) == 1);
+}
+
 TEST_CASE("chain order: the nodes of a fork's chain behind the fork join the stem below",
           "[reconstruct]") {
   // The stem: root, 1 m, fork at 3 m, whose stem chain runs back to 1.5 and 2.5 m before it goes

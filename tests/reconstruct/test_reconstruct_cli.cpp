@@ -91,6 +91,50 @@ TEST_CASE("ramus scan: bad stations and options are user errors", "[reconstruct_
   CHECK(r.status != 0);
   r = run_ramus({"scan", kBroadleaf, "-o", (dir.path / "x.obj").string()});
   CHECK(r.status != 0);
+  // A range resolution parts echoes of a beam of some width; a registration error shifts the
+  // stations after the first.
+  r = run_ramus({"scan", kBroadleaf, "-o", out, "--range-resolution", "0.8"});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("--beam-divergence") != std::string::npos);
+  r = run_ramus({"scan", kBroadleaf, "-o", out, "--registration-error", "0.01"});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("two or more --from") != std::string::npos);
+  r = run_ramus({"scan", kBroadleaf, "-o", out, "--beam-divergence", "-0.3"});
+  CHECK(r.status != 0);
+}
+
+TEST_CASE("ramus scan: a wide beam adds mixed points; reconstruct ignores them as stray",
+          "[reconstruct_cli]") {
+  TempDir dir;
+  const std::string plain = (dir.path / "plain.xyz").string();
+  const std::string beam = (dir.path / "beam.xyz").string();
+  const std::vector<std::string> common{"--from",  "0,-20,0.2", "--from",    "20,0,0.2",
+                                        "--noise", "0.005",     "--density", "600"};
+  std::vector<std::string> a{"scan", kBroadleaf, "-o", plain};
+  a.insert(a.end(), common.begin(), common.end());
+  REQUIRE(run_ramus(a).status == 0);
+  std::vector<std::string> b{"scan", kBroadleaf, "-o", beam};
+  for (const char* arg :
+       {"--beam-divergence", "0.3", "--beam-diameter", "0.002", "--registration-error", "0.003"})
+    b.push_back(arg);
+  b.insert(b.end(), common.begin(), common.end());
+  REQUIRE(run_ramus(b).status == 0);
+  CHECK(slurp(plain) != slurp(beam));
+  const std::string out = (dir.path / "t.json").string();
+  CliResult r = run_ramus({"reconstruct", beam, "-o", out});
+  INFO(r.out);
+  CHECK(r.status == 0);
+  CHECK(r.out.find("stray point(s)") != std::string::npos);
+  r = run_ramus({"reconstruct", beam, "-o", out, "--keep-stray"});
+  CHECK(r.status == 0);
+  CHECK(r.out.find("stray point(s)") == std::string::npos);
+  // The flood fill ignores them too.
+  r = run_ramus({"reconstruct", beam, "-o", out, "--method", "flood"});
+  CHECK(r.status == 0);
+  CHECK(r.out.find("stray point(s)") != std::string::npos);
+  r = run_ramus({"reconstruct", beam, "-o", out, "--method", "flood", "--keep-stray"});
+  CHECK(r.status == 0);
+  CHECK(r.out.find("stray point(s)") == std::string::npos);
 }
 
 TEST_CASE("ramus reconstruct: every output kind from one scan", "[reconstruct_cli]") {

@@ -64,6 +64,10 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
   so.leaves = c.leaves;
   so.density = c.density;
   so.seed = c.seed;
+  so.beam_divergence = c.beam_divergence;
+  so.beam_diameter = c.beam_diameter;
+  so.range_resolution = c.range_resolution;
+  so.registration_error = c.registration_error;
   const ScanResult scan = scan_skeleton(truth, so);
   HarnessResult r;
   r.points = scan.cloud.size();

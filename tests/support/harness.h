@@ -21,6 +21,8 @@ struct HarnessCase {
   double noise = 0.005;
   bool leaves = false;    // also scan the leaf cards (ScanOptions::leaves)
   double density = 3000;  // see ScanOptions::density
+  // The beam and the stations' registration (ScanOptions): 0, a line and exact stations.
+  double beam_divergence = 0, beam_diameter = 0, range_resolution = 0, registration_error = 0;
   std::uint64_t seed = 1;
 };
 
