@@ -41,8 +41,9 @@ struct Scale {
   double height, voxel;
 };
 
+// `spacing`: the median point spacing when the caller has measured it (< 0: measured here).
 Scale choose_scale(const std::vector<Eigen::Vector3d>& pts, const std::vector<std::uint8_t>& keep,
-                   const ReconstructOptions& o) {
+                   const ReconstructOptions& o, double spacing = -1) {
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(1e300), hi = -lo;
   std::vector<std::uint32_t> ids;
   for (std::uint32_t i = 0; i < pts.size(); ++i) {
@@ -59,8 +60,8 @@ Scale choose_scale(const std::vector<Eigen::Vector3d>& pts, const std::vector<st
     // About one point spacing, so that 1-1.3 cm twigs are not merged with their neighbours
     // (docs/reconstruction.md, Accuracy), but never finer than a fraction of the height. Thick
     // branches are brought to one chain by the thickness-adaptive axis projection below.
-    s.voxel = std::max(o.voxel_spacings * median_spacing(pts, ids, false),
-                       s.height * o.voxel_height_floor);
+    if (spacing < 0) spacing = median_spacing(pts, ids, false);
+    s.voxel = std::max(o.voxel_spacings * spacing, s.height * o.voxel_height_floor);
   }
   if (!(s.voxel > 0)) s.voxel = std::max(extent, 1.0) * 1e-3;
   return s;
@@ -152,7 +153,8 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
   if (o.remove_stray) {
     // Before the bases: they are found on the points the graph is built from. The voxel of the
     // whole cloud sets the reach (the trees' own is chosen after terrain removal, below).
-    res.counts.stray_points = drop_stray_points(pts, keep, 4 * choose_scale(pts, keep, o).voxel);
+    res.counts.stray_points = drop_stray_points(
+        pts, keep, [&](double spacing) { return 4 * choose_scale(pts, keep, o, spacing).voxel; });
     if (res.counts.stray_points > 0) {
       res.notes.push_back("ignored " + std::to_string(res.counts.stray_points) +
                           " stray point(s): fewer than two others within four voxels");

@@ -424,8 +424,8 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
   if (o.remove_stray) {
     // Mixed-pixel returns alone in the air (docs/reconstruction.md, Stray points): the flood
     // takes each into its tree's layers and grows a branch to it.
-    const double spacing = std::max(median_spacing(epts, keep), 1e-3 * height);
-    res.counts.stray_points = bsg::drop_stray_points(epts, keep, 4 * spacing);
+    res.counts.stray_points = bsg::drop_stray_points(
+        epts, keep, [&](double spacing) { return 4 * std::max(spacing, 1e-3 * height); });
     if (res.counts.stray_points > 0) {
       res.notes.push_back("ignored " + std::to_string(res.counts.stray_points) +
                           " stray point(s): fewer than two others within four point spacings");

@@ -1,8 +1,10 @@
 // Stray points (reconstruct/bsg/stray_points.h): points alone in the air are dropped, the points
-// of a surface or of a thin twig sampled along its length are kept, and points already left out
-// neither count as neighbours nor are counted again.
+// of a surface or of a thin twig sampled along its length are kept, points already left out
+// neither count as neighbours nor are counted again, and the reach may follow the median spacing
+// that the same search measures.
 #include <catch2/catch.hpp>
 
+#include "reconstruct/bsg/kdtree.h"
 #include "reconstruct/bsg/stray_points.h"
 
 using namespace ramus;
@@ -27,6 +29,26 @@ TEST_CASE("stray points: points alone in the air go, a surface stays", "[reconst
   CHECK(bsg::drop_stray_points(p, keep, 0.04) == 5);
   for (std::size_t i = 0; i < surface; ++i) CHECK(keep[i] == 1);
   for (std::size_t i = surface; i < p.size(); ++i) CHECK(keep[i] == 0);
+}
+
+TEST_CASE("stray points: the reach can follow the median spacing the same search measures",
+          "[reconstruct]") {
+  std::vector<Eigen::Vector3d> p = patch();
+  const std::size_t surface = p.size();
+  for (int k = 0; k < 5; ++k) p.emplace_back(0.04 * k, 0.1, 0.2 + 0.1 * k);
+  std::vector<std::uint8_t> keep(p.size(), 1);
+  double measured = 0;
+  const std::size_t dropped = bsg::drop_stray_points(p, keep, [&](double spacing) {
+    measured = spacing;
+    return 4 * spacing;
+  });
+  CHECK(measured == Approx(0.01));  // the patch's spacing; the five strays do not move the median
+  CHECK(dropped == 5);
+  for (std::size_t i = 0; i < surface; ++i) CHECK(keep[i] == 1);
+  // The same as median_spacing (kdtree.h) over the same points.
+  std::vector<std::uint32_t> ids(p.size());
+  for (std::uint32_t i = 0; i < ids.size(); ++i) ids[i] = i;
+  CHECK(measured == bsg::median_spacing(p, ids, false));
 }
 
 TEST_CASE("stray points: a twig sampled along its length stays; a pair alone goes",
