@@ -313,6 +313,24 @@ TEST_CASE("stem tracking: a fitted base that turns into a limb is taken as it is
   CHECK(start != 0);  // not replaced from its first node (5, or no track at all)
 }
 
+TEST_CASE("stem tracking: one fitted node off the axis at the base's end does not start the track",
+          "[reconstruct]") {
+  // The run's last node alone leaves the axis (the chain stepped onto a whorl branch's base, and
+  // its cross-section was fitted there): the track starts on the axis and goes on up the trunk,
+  // as from a base that stays on it (start 5, top above 5 m in the case above).
+  ConiferCase c(31);
+  auto& [scan, index, fitted, b] = c;
+  const auto& [e1, e2] = kAcross;
+  b.pos[5] += 0.3 * e1;
+  std::uint32_t start = bsg::kNone;
+  const bsg::StemTrack track = c.track(start);
+  REQUIRE(start == 0);  // the base with its last node left out is replaced from its first node
+  const auto [top, worst] = track_on_axis(track);
+  INFO("top " << top << ", farthest from the axis " << worst);
+  CHECK(top > 5.0);
+  CHECK(worst < 0.03);
+}
+
 // The bundled conifer from one station (the accuracy harness): before the tracking the BSG's
 // trunk chain left the trunk at every whorl (median centre-line error over all samples 10-20 cm
 // 0.689 r, 20-40 cm 0.167 r); measured with it 0.122 and 0.036.
