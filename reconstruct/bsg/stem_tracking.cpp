@@ -363,7 +363,7 @@ StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
     }
     Eigen::Vector3d mean, dir;
     fit_line(stretch, mean, dir);
-    const bool fitted_line = base.size() >= 3 && dir.norm() > 0;
+    const bool fitted_line = stretch.size() >= 3 && dir.norm() > 0;
     if (fitted_line && dir.dot(base_direction) < 0) dir = -dir;
     const Eigen::Vector3d top =
         fitted_line ? Eigen::Vector3d(mean + (b.pos[chain[first]] - mean).dot(dir) * dir)

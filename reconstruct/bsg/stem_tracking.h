@@ -35,14 +35,15 @@ struct StemTrack {
 // start nor steer the track:
 // it starts from the last node on the axis, with the median radius of the last five there, and
 // the nodes on the axis become the track's first points, from the run's first node, which is
-// then `start` (so rehang_on_track replaces the others). When the run's last node is itself off
-// the axis (the chain went on into a limb), the run is taken as it is. When the run starts above
-// the root (ground clutter, a root flare), the track also runs straight down from it along the
-// run's direction to the root's level and `start` is the root, which rehang_on_track moves onto
-// it; otherwise `start` is the run's last node. Each point's radius is the median of its own and
-// its neighbours', and at most the radius below it (a trunk does not thicken upwards). Empty when
-// the base run is shorter than two radii, or when nothing beyond it was accepted and no node of
-// it was off its axis.
+// then `start` (so rehang_on_track replaces the others). When the run's last two nodes or more
+// are off the axis (the chain went on into a limb), the run is taken as it is; one node off it
+// (a whorl branch's base) is left out like the others. When the run starts above the root
+// (ground clutter, a root flare), the track also runs straight down from it to the root's level,
+// along the line fitted to the base and the track's fitted points within 20 base radii, and
+// `start` is the root, which rehang_on_track moves onto it; otherwise `start` is the run's last
+// node. Each point's radius is the median of its own and its neighbours', and at most the radius
+// below it (a trunk does not thicken upwards). Empty when the base run is shorter than two radii,
+// or when nothing beyond it was accepted and no node of it was off its axis.
 StemTrack track_trunk(const Bsg& b, const std::vector<std::uint8_t>& fitted,
                       const PointIndex& index, const std::vector<Eigen::Vector3d>& samples,
                       const std::vector<double>& weight, double spacing, std::uint32_t& start);
