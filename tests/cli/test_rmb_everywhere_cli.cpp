@@ -56,7 +56,7 @@ TEST_CASE("rmb: every example derives the same string from its .rmb", "[cli][rmb
   CHECK(compared >= 29);
 }
 
-TEST_CASE("rmb: build, scan and compare read an .rmb; -D and --system are refused", "[cli][rmb]") {
+TEST_CASE("rmb: build, scan and compare read an .rmb, -D and --system are refused", "[cli][rmb]") {
   const std::string src =
       std::string(RAMUS_SOURCE_DIR) + "/examples/abop/fig5_5_cordate_leaf.ramus";
   const fs::path dir = temp_dir();

@@ -55,7 +55,7 @@ TEST_CASE("a mapped file's released pages leave the resident set and read back u
   std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("a file that cannot be mapped is read into memory; a missing one is an error",
+TEST_CASE("a file that cannot be mapped is read into memory, a missing one is an error",
           "[mapped]") {
   CHECK(test::error_of([] {
           MappedFile f("/nonexistent/ramus.las");

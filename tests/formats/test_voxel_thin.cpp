@@ -73,7 +73,7 @@ TEST_CASE("thinning while reading keeps the points of read-then-thin in the bund
   }
 }
 
-TEST_CASE("a LAS header's box saves the second pass; a stale one costs it, with the same points",
+TEST_CASE("a LAS header's box saves the second pass, a stale one costs it, with the same points",
           "[thin]") {
   LasSpec spec;
   spec.minor = 4;

@@ -214,3 +214,17 @@ TEST_CASE("every stage folder says its job, what it may include and its entry he
     CHECK(text.str().find("Entry headers:") != std::string::npos);
   }
 }
+
+// ctest registers each Catch2 test case by its name, and a name with ';' is split in two (a CMake
+// list): neither half names a test case, so the test ran nothing and passed.
+TEST_CASE("no test case name holds a semicolon") {
+  const std::regex test_case(R"(TEST_CASE\(\s*"([^"]*)\")");
+  for (const fs::path& file : sources_under("tests")) {
+    for (const std::string& line : lines_of(file)) {
+      std::smatch m;
+      if (!std::regex_search(line, m, test_case)) continue;
+      INFO(file.string() << ": " << m[1].str());
+      CHECK(m[1].str().find(';') == std::string::npos);
+    }
+  }
+}

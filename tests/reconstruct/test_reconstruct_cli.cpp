@@ -35,7 +35,7 @@ std::size_t roots_in(const std::string& json) {
 
 }  // namespace
 
-TEST_CASE("ramus scan: stations, noise and density shape the cloud; truth is written",
+TEST_CASE("ramus scan: stations, noise and density shape the cloud, truth is written",
           "[reconstruct_cli]") {
   TempDir dir;
   const fs::path one = dir.path / "one.xyz", two = dir.path / "two.xyz", dense = dir.path / "d.xyz";
@@ -103,7 +103,7 @@ TEST_CASE("ramus scan: bad stations and options are user errors", "[reconstruct_
   CHECK(r.status != 0);
 }
 
-TEST_CASE("ramus scan: a wide beam adds mixed points; reconstruct ignores them as stray",
+TEST_CASE("ramus scan: a wide beam adds mixed points, reconstruct ignores them as stray",
           "[reconstruct_cli]") {
   TempDir dir;
   const std::string plain = (dir.path / "plain.xyz").string();

@@ -51,7 +51,7 @@ TEST_CASE("stray points: the reach can follow the median spacing the same search
   CHECK(measured == bsg::median_spacing(p, ids, false));
 }
 
-TEST_CASE("stray points: a twig sampled along its length stays; a pair alone goes",
+TEST_CASE("stray points: a twig sampled along its length stays, a pair alone goes",
           "[reconstruct]") {
   std::vector<Eigen::Vector3d> p;
   for (int k = 0; k < 12; ++k) p.emplace_back(0.0, 0.0, 0.03 * k);  // 3 cm apart, 4 cm reach

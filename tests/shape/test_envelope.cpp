@@ -86,7 +86,7 @@ TEST_CASE("envelope: the base is the lowest z and the mean x, y of the lowest 5 
   CHECK(e.base.axis.y == Approx(4 * 4.0 / 11));
 }
 
-TEST_CASE("envelope: inputs without height are refused; an empty tree gives 0", "[shape]") {
+TEST_CASE("envelope: inputs without height are refused, an empty tree gives 0", "[shape]") {
   const PointCloud flat = cloud_of({{0, 0, 1}, {1, 0, 1}, {0, 1, 1}});
   CHECK_THROWS_AS(shape::scan_envelope(flat), shape::ShapeError);
   CHECK_THROWS_AS(shape::scan_envelope(PointCloud{}), shape::ShapeError);

@@ -256,7 +256,7 @@ TEST_CASE("scaffold grammar: -D branch_angle widens the crown, -D lateral_share 
   CHECK(bent < stiff);
 }
 
-TEST_CASE("scaffold grammar: the same input and seed write the same bytes; no segment is an error",
+TEST_CASE("scaffold grammar: the same input and seed write the same bytes, no segment is an error",
           "[skeleton_infer]") {
   const Skeleton input = skeleton_test::grow_example("examples/trees/weeping.ramus");
   CHECK(skeleton_infer::infer_scaffold_grammar(input).text ==

@@ -68,7 +68,7 @@ TEST_CASE("infer on every readable real scan writes a grammar that checks and bu
   CHECK(validates(glbs, out));
 }
 
-TEST_CASE("infer options: grid, axiom level, offset, scanner; same input same bytes",
+TEST_CASE("infer options: grid, axiom level, offset, scanner, same input same bytes",
           "[infer][cli]") {
   const std::string scan = data("rtwig_cloud.txt");
   if (!fs::exists(scan)) {

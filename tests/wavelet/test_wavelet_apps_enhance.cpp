@@ -23,7 +23,7 @@ std::size_t number_after(const std::string& text, const std::string& label) {
 
 }  // namespace
 
-TEST_CASE("enhance levels cli: each level refines the tree; same seed, same bytes",
+TEST_CASE("enhance levels cli: each level refines the tree, same seed, same bytes",
           "[wavelet][enhance][cli]") {
   const std::string scan = std::string(RAMUS_SHARED_DIR) + "/data/rtwig_cloud.txt";
   if (!fs::exists(scan)) {

@@ -143,7 +143,7 @@ TEST_CASE("wood mixture: EM recovers two separated Gaussians over many seeds", "
   }
 }
 
-TEST_CASE("wood mixture: one mode gives a small separation; constant input does not break",
+TEST_CASE("wood mixture: one mode gives a small separation, constant input does not break",
           "[wood]") {
   Rng rng(3);
   std::vector<double> x;
