@@ -1,9 +1,10 @@
 // Flood-fill skeletons against the BSG method, and branch merging (docs/flood-fill.md,
 // docs/branch-merging.md):
-//   bench_flood accuracy [--beam-divergence MRAD --beam-diameter D] GRAMMAR...
+//   bench_flood accuracy [--beam-divergence MRAD --beam-diameter D] [--stray-cluster N] GRAMMAR...
 //                                    grammar tree -> simulated scans (1 and 3 stations, range
 //                                    noise 5 mm; a beam of some width when given, as `ramus
-//                                    scan`) -> BSG and flood -> scores and time
+//                                    scan`) -> BSG and flood -> scores and time; stray clusters
+//                                    of fewer than N points (both methods; default theirs)
 //   bench_flood time SCAN...         BSG and flood times on real scans
 //   bench_flood merge FILE...        a grammar tree (.ramus) or the flood skeleton of a scan:
 //                                    nodes and bark triangles against the Chamfer distance to the
@@ -56,7 +57,7 @@ void print_row(const char* method, const std::string& path, int stations, std::s
 }
 
 // The accuracy harness of tests/support/harness.h, run for both methods on the same scan.
-void accuracy(const std::string& path, const scanner::HarnessCase& base) {
+void accuracy(const std::string& path, const scanner::HarnessCase& base, int stray_cluster) {
   // "thick-small" and "thick": the 8 m, 30 cm and the 14 m, 60 cm trunk trees of
   // tests/reconstruct/reconstruct_fixtures.h.
   const Skeleton truth = path == "thick-small" ? test::thick_tree(5, 8.0, 0.3)
@@ -72,7 +73,10 @@ void accuracy(const std::string& path, const scanner::HarnessCase& base) {
           scanner::run_harness(truth, hc, [&](const PointCloud& cloud) {
             flood::FloodOptions fo;
             fo.centre_lines = std::strcmp(method, "flood-raw") != 0;
-            last = std::strcmp(method, "bsg") == 0 ? reconstruct(cloud)
+            ReconstructOptions ro;
+            if (stray_cluster >= 0)
+              fo.stray_cluster = ro.stray_cluster = std::size_t(stray_cluster);
+            last = std::strcmp(method, "bsg") == 0 ? reconstruct(cloud, ro)
                                                    : flood::flood_reconstruct(cloud, fo);
             return last;
           });
@@ -144,14 +148,17 @@ int main(int argc, char** argv) {
   try {
     const std::string mode = argv[1];
     scanner::HarnessCase beam;
+    int stray_cluster = -1;
     for (int i = 2; i < argc; ++i) {
       const std::string arg = argv[i];
       if (mode == "accuracy" && arg == "--beam-divergence" && i + 1 < argc) {
         beam.beam_divergence = 1e-3 * std::atof(argv[++i]);
       } else if (mode == "accuracy" && arg == "--beam-diameter" && i + 1 < argc) {
         beam.beam_diameter = std::atof(argv[++i]);
+      } else if (mode == "accuracy" && arg == "--stray-cluster" && i + 1 < argc) {
+        stray_cluster = std::atoi(argv[++i]);
       } else if (mode == "accuracy") {
-        accuracy(argv[i], beam);
+        accuracy(argv[i], beam, stray_cluster);
       } else if (mode == "time") {
         time_scan(argv[i]);
       } else if (mode == "merge") {

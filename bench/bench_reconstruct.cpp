@@ -9,7 +9,8 @@
 // --registration-error M (as `ramus scan`: a beam of some width, stations registered with an
 // error), --opt name=value (a ReconstructOptions field, for parameter sweeps: voxel,
 // voxel_spacings, voxel_floor, neighbours, max_gap, hidden_limb_reach, contraction, iterations,
-// overlap, min_branch, min_cylinder, ground_band, terrain, stray, centre_lines, extend_tips),
+// overlap, min_branch, min_cylinder, ground_band, terrain, stray, stray_cluster, centre_lines,
+// extend_tips),
 // --stations N (only N stations instead of 1 and 3), --dump PREFIX (write the truth and the
 // reconstruction as skeleton JSON, the scan as .xyz), --azimuth DEG (turn the tree by DEG about the
 // vertical through its root before scanning: the stations see another side of it), --repeat N
@@ -88,6 +89,8 @@ void set_option(ReconstructOptions& o, const std::string& kv) {
     o.allometry_exponent = v;
   else if (k == "stray")
     o.remove_stray = v != 0;
+  else if (k == "stray_cluster")
+    o.stray_cluster = std::size_t(v);
   else if (k == "terrain")
     o.remove_terrain = v != 0;
   else

@@ -1,6 +1,7 @@
 // ramus reconstruct SCAN -o OUT.glb|.gltf|.obj|.ply|.json [--trees one|all] [--voxel V]
 //                      [--no-leaves] [--seed S] [--method bsg|flood] [--merge ALPHA,BETA]
-//                      [--up y|z] [--thin S] [--bases livny|stems] [--keep-stray]
+//                      [--up y|z] [--thin S] [--bases livny|stems]
+//                      [--keep-stray | --stray-cluster N]
 // ramus reconstruct DIR/manifest.json --tile K -o DIR/K.json ...
 // Reads a laser scan, reconstructs the skeletons of the trees in it (Livny et al. 2010; see
 // docs/reconstruction.md) and writes them as a mesh or as skeleton JSON. With a tile manifest
@@ -36,6 +37,7 @@ struct ReconstructArgs {
   std::string merge_angles;  // "alpha,beta" of branch merging; empty: no merging
   bool no_leaves = false;
   bool keep_stray = false;  // --keep-stray: points alone in the air are reconstructed too
+  int stray_cluster = -1;   // --stray-cluster N: smaller clusters are stray; -1: the default
   std::uint64_t seed = 1;
   std::string leaves_in_scan = "keep";  // foliage in the scan: keep, remove or auto
   std::string up;                       // --up of an OBJ or PLY mesh; empty: the default
@@ -139,6 +141,10 @@ int run_reconstruct(const ReconstructArgs& a, const GlobalOptions& global) {
   ReconstructOptions o;
   o.leaves = !a.no_leaves;
   o.remove_stray = !a.keep_stray;
+  if (a.stray_cluster >= 0) {
+    if (a.keep_stray) throw UserError("--stray-cluster does not apply with --keep-stray");
+    o.stray_cluster = std::size_t(a.stray_cluster);
+  }
   o.leaves_in_scan = a.leaves_in_scan == "keep"     ? LeafHandling::kKeep
                      : a.leaves_in_scan == "remove" ? LeafHandling::kRemove
                                                     : LeafHandling::kAuto;
@@ -241,8 +247,13 @@ void add_reconstruct(CLI::App& app, const GlobalOptions& global, std::function<i
       ->check(CLI::IsMember({"one", "all"}));
   sub->add_flag("--no-leaves", args->no_leaves, "do not synthesize leaves at the branch tips");
   sub->add_flag("--keep-stray", args->keep_stray,
-                "reconstruct points with fewer than two others within four voxels too (default: "
-                "ignored as stray returns, e.g. mixed pixels at twig edges)");
+                "reconstruct stray points too: those with fewer than two others within four "
+                "voxels (default: ignored as stray returns, e.g. mixed pixels at twig edges)");
+  sub->add_option("--stray-cluster", args->stray_cluster,
+                  "points in a cluster (linked by steps within four voxels) of fewer than N "
+                  "points are stray too: runs of mixed points (5 for a phase-shift scanner; "
+                  "default 1: no cluster is stray for its size)")
+      ->check(CLI::NonNegativeNumber);
   sub->add_option("--leaves-in-scan", args->leaves_in_scan,
                   "foliage in the scan: keep every point (default), remove it first (wood/leaf "
                   "separation), or auto: remove it only when the separation finds a foliage mode "

@@ -27,6 +27,7 @@ ReconstructResult run_reconstruction(const PointCloud& cloud, const ReconstructC
     flood::FloodOptions fo;
     fo.voxel_size = choice.voxel;
     fo.remove_stray = base.remove_stray;
+    fo.stray_cluster = base.stray_cluster;
     return flood::flood_reconstruct(cloud, fo);
   }
   return reconstruct(cloud, reconstruct_options(choice, base));

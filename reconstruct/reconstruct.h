@@ -60,8 +60,12 @@ struct ReconstructOptions {
                                    // low branches of its tree; auto: 10% of the height
   std::vector<Vec3> roots;  // world positions of tree bases; when set, base detection is skipped
   // Points with fewer than two others within four voxels are ignored (docs/reconstruction.md,
-  // "Stray points": mixed-pixel returns between a twig's edge and what lies behind it).
+  // "Stray points": mixed-pixel returns between a twig's edge and what lies behind it), and with
+  // `stray_cluster` > 1 those of clusters of fewer points, linked by steps within four voxels,
+  // after the terrain ("Runs of a few": 5 for a phase-shift scanner's runs of mixed points; off
+  // by default, as it cost some real scans).
   bool remove_stray = true;
+  std::size_t stray_cluster = 1;
 
   // Refinement (4.2).
   int max_iterations = 2;          // Dijkstra + refinement rounds at most (paper: 2-3 suffice)

@@ -96,7 +96,35 @@ class AppendWithin {
   std::size_t start_;
 };
 
+// nanoflann's result set counting the points within a radius, up to a cap: addPoint's false
+// ends the search.
+class CountWithin {
+ public:
+  using DistanceType = double;
+  using IndexType = std::uint32_t;
+  CountWithin(double radius2, std::size_t cap) : radius2_(radius2), cap_(cap) {}
+  std::size_t size() const { return count_; }
+  bool full() const { return true; }
+  double worstDist() const { return radius2_; }
+  bool addPoint(double dist, std::uint32_t) {
+    if (dist < radius2_) ++count_;
+    return count_ < cap_;
+  }
+
+ private:
+  double radius2_;
+  std::size_t cap_, count_ = 0;
+};
+
 }  // namespace
+
+std::size_t PointIndex::count_within(const Eigen::Vector3d& q, double radius,
+                                     std::size_t cap) const {
+  if (size() == 0 || cap == 0 || !(radius > 0)) return 0;
+  CountWithin result(radius * radius, cap);
+  tree_->findNeighbors(result, q.data(), nanoflann::SearchParams(32, 0, false));
+  return result.size();
+}
 
 void PointIndex::within(const Eigen::Vector3d& q, double radius,
                         std::vector<std::uint32_t>& out) const {

@@ -26,6 +26,9 @@ class PointIndex {
   std::size_t knn_within(const Eigen::Vector3d& q, std::size_t k, double radius, std::uint32_t* out,
                          double* d2) const;
 
+  // How many points lie within `radius` of q, counted up to `cap`: the search stops at the cap,
+  // which on a surface is after the first cell or two.
+  std::size_t count_within(const Eigen::Vector3d& q, double radius, std::size_t cap) const;
   // Every point within `radius` of q (original indices, unordered), appended to `out`.
   void within(const Eigen::Vector3d& q, double radius, std::vector<std::uint32_t>& out) const;
   // The points of within(q, radius) that may lie in the slab |(p - q) . d| <= half (d a unit

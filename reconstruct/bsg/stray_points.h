@@ -12,24 +12,42 @@
 #include <cstddef>
 #include <cstdint>
 #include <functional>
+#include <string>
 #include <vector>
 
 namespace ramus::bsg {
 
-// Clears keep[i] for every kept point with fewer than `min_neighbours` other kept points within
-// `radius` (duplicates of it count), judged against the points kept on entry (one pass: what a
-// stray leaves alone is not dropped in turn; nothing is dropped when no more than
-// `min_neighbours` points are kept). Returns the number of points dropped.
+// What makes a point stray. Mixed pixels also come in runs of a few (the neighbouring beams of
+// one scan line at the same twig edge): three points 1.5 cm apart, alone in the air, each with
+// two others within reach. A cluster (points linked by steps within the reach) that small is no
+// branch either: the gap bridging chained such runs into branches through the air (the weeping
+// tree scanned with a 0.3 mrad beam from three stations). Runs are mostly three or four points;
+// bark seen through a gap in the crown makes clusters of every size (docs/reconstruction.md,
+// "Runs of a few": 5 is what was measured best; the pipelines leave it off by default).
+struct StrayRule {
+  int min_neighbours = 2;       // fewer other points than this within the reach: stray
+  std::size_t min_cluster = 1;  // in a cluster of fewer points than this: stray (1: none)
+};
+
+// The rule in words for a note: "fewer than two others within four <unit>[, or in a cluster of
+// fewer than 5 points]"; `unit` names what the reach is four of.
+std::string stray_rule_text(const StrayRule& rule, const std::string& unit);
+
+// Clears keep[i] for every stray kept point: fewer than `rule.min_neighbours` other kept points
+// within `radius` (duplicates of it count), or in a cluster of fewer than `rule.min_cluster`
+// kept points linked by steps shorter than `radius`. Judged against the points kept on entry
+// (one pass: what a stray leaves alone is not dropped in turn). Nothing is dropped when no more
+// than `rule.min_neighbours` points are kept, and no cluster is dropped for its size when none
+// is as large as `rule.min_cluster`. Returns the number of points dropped.
 std::size_t drop_stray_points(const std::vector<Eigen::Vector3d>& pts,
-                              std::vector<std::uint8_t>& keep, double radius,
-                              int min_neighbours = 2);
+                              std::vector<std::uint8_t>& keep, double radius, StrayRule rule = {});
 
 // The same with the reach set from the points themselves: `reach(spacing)` of the median
 // distance from a kept point to its nearest other (over the strided sample of median_spacing in
-// kdtree.h, the same value). One k-d tree and one search per point serve both (the pipeline's
-// whole-cloud voxel cost a second tree and search, 2 ms of a 40 ms airborne scan).
+// kdtree.h, the same value). One k-d tree serves both (the pipeline's whole-cloud voxel cost a
+// second tree and search, 2 ms of a 40 ms airborne scan).
 std::size_t drop_stray_points(const std::vector<Eigen::Vector3d>& pts,
                               std::vector<std::uint8_t>& keep,
-                              const std::function<double(double)>& reach, int min_neighbours = 2);
+                              const std::function<double(double)>& reach, StrayRule rule = {});
 
 }  // namespace ramus::bsg

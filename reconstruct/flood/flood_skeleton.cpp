@@ -421,15 +421,17 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
     return res;
   }
   const double height = std::max(hi.z - lo.z, 1e-3 * extent);
+  // Mixed-pixel returns (docs/reconstruction.md, Stray points): the flood takes each into its
+  // tree's layers and grows a branch to it. Those alone in the air go before the bases, the
+  // small clusters after the terrain, as in the BSG pipeline.
+  bsg::StrayRule rule;
+  rule.min_cluster = o.stray_cluster;
+  double stray_reach = 0;
   if (o.remove_stray) {
-    // Mixed-pixel returns alone in the air (docs/reconstruction.md, Stray points): the flood
-    // takes each into its tree's layers and grows a branch to it.
     res.counts.stray_points = bsg::drop_stray_points(
-        epts, keep, [&](double spacing) { return 4 * std::max(spacing, 1e-3 * height); });
-    if (res.counts.stray_points > 0) {
-      res.notes.push_back("ignored " + std::to_string(res.counts.stray_points) +
-                          " stray point(s): fewer than two others within four point spacings");
-    }
+        epts, keep,
+        [&](double spacing) { return stray_reach = 4 * std::max(spacing, 1e-3 * height); },
+        {rule.min_neighbours, 0});
   }
 
   // Tree bases and terrain, with the BSG pipeline's default scales (Livny et al. 4.1).
@@ -450,6 +452,13 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
   }
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (bases.terrain[i] && keep[i]) keep[i] = 0, ++res.counts.terrain_points;
+  }
+  if (o.remove_stray && stray_reach > 0 && !bases.roots.empty())
+    res.counts.stray_points +=
+        bsg::drop_stray_points(epts, keep, stray_reach, {0, rule.min_cluster});
+  if (res.counts.stray_points > 0) {
+    res.notes.push_back("ignored " + std::to_string(res.counts.stray_points) +
+                        " stray point(s): " + bsg::stray_rule_text(rule, "point spacings"));
   }
   res.timings.bases = seconds_since(t);
   if (bases.roots.empty()) {

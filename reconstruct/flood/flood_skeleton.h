@@ -57,8 +57,10 @@ struct FloodOptions {
   // (reconstruct/bsg/centre_line.h; docs/reconstruction.md).
   bool centre_lines = true;
   // Points with fewer than two others within four point spacings (at least 1/1000 of the height)
-  // are ignored before the bases, as in ReconstructOptions::remove_stray.
+  // are ignored before the bases, and with `stray_cluster` > 1 those of clusters of fewer points
+  // linked by such steps after the terrain, as in ReconstructOptions::remove_stray.
   bool remove_stray = true;
+  std::size_t stray_cluster = 1;
   // Tree bases: as in ReconstructOptions; `roots` (world positions) skips base detection.
   bool remove_terrain = true;
   std::vector<Vec3> roots;

@@ -1,7 +1,7 @@
 // The k-d tree's slab query (reconstruct/bsg/kdtree.h): PointIndex::within_slab must give the
 // points of within() that lie in the slab, in within()'s order, because the cross-sections'
 // thinning, sums and random triples depend on that order (the reconstructions are byte for byte
-// those of the ball query).
+// those of the ball query). The capped count is the ball query's size, up to the cap.
 #include <Eigen/Geometry>
 #include <catch2/catch.hpp>
 #include <cmath>
@@ -91,4 +91,28 @@ TEST_CASE("within_slab on an empty index or a zero radius finds nothing", "[reco
   CHECK(out.empty());
   single.within_slab(Eigen::Vector3d(0, 0, 0.05), 1.0, Eigen::Vector3d::UnitZ(), 0.1, out);
   CHECK(out == std::vector<std::uint32_t>{0});
+}
+
+TEST_CASE("count_within is the ball query's size up to the cap", "[reconstruct]") {
+  const std::vector<Eigen::Vector3d> pts = bark(12, 5000);
+  const PointIndex index(pts);
+  Rng rng(6);
+  std::size_t capped = 0, below = 0;
+  for (int k = 0; k < 500; ++k) {
+    const Eigen::Vector3d q =
+        pts[rng.below(pts.size())] + Eigen::Vector3d(rng.normal(0, 0.05), rng.normal(0, 0.05), 0);
+    const double radius = rng.uniform(0.005, 0.1);
+    const std::size_t cap = 1 + rng.below(12);
+    std::vector<std::uint32_t> all;
+    index.within(q, radius, all);
+    REQUIRE(index.count_within(q, radius, cap) == std::min(all.size(), cap));
+    (all.size() >= cap ? capped : below) += 1;
+  }
+  // Both sides of the cap are met.
+  CHECK(capped > 50);
+  CHECK(below > 50);
+  const std::vector<Eigen::Vector3d> none;
+  CHECK(PointIndex(none).count_within(Eigen::Vector3d::Zero(), 1.0, 5) == 0);
+  CHECK(index.count_within(pts[0], 0.0, 5) == 0);
+  CHECK(index.count_within(pts[0], 1.0, 0) == 0);
 }

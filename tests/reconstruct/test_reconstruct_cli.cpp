@@ -135,6 +135,34 @@ TEST_CASE("ramus scan: a wide beam adds mixed points, reconstruct ignores them a
   r = run_ramus({"reconstruct", beam, "-o", out, "--method", "flood", "--keep-stray"});
   CHECK(r.status == 0);
   CHECK(r.out.find("stray point(s)") == std::string::npos);
+  // The cluster size: the note says it, a larger one takes at least the points a smaller one
+  // does, 1 (the default) leaves the neighbour test alone, and it has no meaning with
+  // --keep-stray.
+  const auto ignored = [&](const std::vector<std::string>& extra) {
+    std::vector<std::string> args{"reconstruct", beam, "-o", out};
+    args.insert(args.end(), extra.begin(), extra.end());
+    const CliResult c = run_ramus(args);
+    INFO(c.out);
+    CHECK(c.status == 0);
+    const std::size_t at = c.out.find("ignored ");
+    return at == std::string::npos ? 0L : std::stol(c.out.substr(at + 8));
+  };
+  r = run_ramus({"reconstruct", beam, "-o", out, "--stray-cluster", "5"});
+  CHECK(r.out.find("or in a cluster of fewer than 5 points") != std::string::npos);
+  const long alone = ignored({"--stray-cluster", "1"});
+  const long by_default = ignored({});
+  const long five = ignored({"--stray-cluster", "5"});
+  const long twelve = ignored({"--stray-cluster", "12"});
+  CHECK(alone > 0);
+  CHECK(by_default == alone);
+  CHECK(five >= alone);
+  CHECK(twelve > alone);
+  CHECK(twelve >= five);
+  r = run_ramus({"reconstruct", beam, "-o", out});
+  CHECK(r.out.find("cluster") == std::string::npos);
+  r = run_ramus({"reconstruct", beam, "-o", out, "--keep-stray", "--stray-cluster", "3"});
+  CHECK(r.status == 1);
+  CHECK(r.out.find("--stray-cluster does not apply with --keep-stray") != std::string::npos);
 }
 
 TEST_CASE("ramus reconstruct: every output kind from one scan", "[reconstruct_cli]") {
