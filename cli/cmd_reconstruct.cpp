@@ -253,7 +253,7 @@ void add_reconstruct(CLI::App& app, const GlobalOptions& global, std::function<i
                   "points in a cluster (linked by steps within four voxels) of fewer than N "
                   "points are stray too: runs of mixed points (5 for a phase-shift scanner; "
                   "default 1: no cluster is stray for its size)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, 1000));
   sub->add_option("--leaves-in-scan", args->leaves_in_scan,
                   "foliage in the scan: keep every point (default), remove it first (wood/leaf "
                   "separation), or auto: remove it only when the separation finds a foliage mode "

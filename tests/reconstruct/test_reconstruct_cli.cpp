@@ -160,6 +160,9 @@ TEST_CASE("ramus scan: a wide beam adds mixed points, reconstruct ignores them a
   CHECK(twelve >= five);
   r = run_ramus({"reconstruct", beam, "-o", out});
   CHECK(r.out.find("cluster") == std::string::npos);
+  r = run_ramus({"reconstruct", beam, "-o", out, "--stray-cluster", "-1"});
+  CHECK(r.status != 0);
+  CHECK(r.out.find("--stray-cluster") != std::string::npos);
   r = run_ramus({"reconstruct", beam, "-o", out, "--keep-stray", "--stray-cluster", "3"});
   CHECK(r.status == 1);
   CHECK(r.out.find("--stray-cluster does not apply with --keep-stray") != std::string::npos);
