@@ -1,10 +1,12 @@
 // Flood-fill skeletons against the BSG method, and branch merging (docs/flood-fill.md,
 // docs/branch-merging.md):
-//   bench_flood accuracy [--beam-divergence MRAD --beam-diameter D] [--stray-cluster N] GRAMMAR...
+//   bench_flood accuracy [SCAN FLAGS] [--stray-cluster N] GRAMMAR...
 //                                    grammar tree -> simulated scans (1 and 3 stations, range
-//                                    noise 5 mm; a beam of some width when given, as `ramus
-//                                    scan`) -> BSG and flood -> scores and time; stray clusters
-//                                    of fewer than N points (both methods; default theirs)
+//                                    noise 5 mm; the scan flags of bench_reconstruct, as `ramus
+//                                    scan`: --noise, --density, --beam-divergence, --beam-diameter,
+//                                    --range-resolution, --registration-error) -> BSG and flood
+//                                    -> scores and time; stray clusters of fewer than N points
+//                                    (both methods; default theirs)
 //   bench_flood time SCAN...         BSG and flood times on real scans
 //   bench_flood merge FILE...        a grammar tree (.ramus) or the flood skeleton of a scan:
 //                                    nodes and bark triangles against the Chamfer distance to the
@@ -147,18 +149,16 @@ int main(int argc, char** argv) {
   }
   try {
     const std::string mode = argv[1];
-    scanner::HarnessCase beam;
+    scanner::HarnessCase scan_case;
     int stray_cluster = -1;
     for (int i = 2; i < argc; ++i) {
       const std::string arg = argv[i];
-      if (mode == "accuracy" && arg == "--beam-divergence" && i + 1 < argc) {
-        beam.beam_divergence = 1e-3 * std::atof(argv[++i]);
-      } else if (mode == "accuracy" && arg == "--beam-diameter" && i + 1 < argc) {
-        beam.beam_diameter = std::atof(argv[++i]);
+      if (mode == "accuracy" && scanner::read_scan_flag(argc, argv, i, scan_case)) {
+        continue;
       } else if (mode == "accuracy" && arg == "--stray-cluster" && i + 1 < argc) {
         stray_cluster = std::atoi(argv[++i]);
       } else if (mode == "accuracy") {
-        accuracy(argv[i], beam, stray_cluster);
+        accuracy(argv[i], scan_case, stray_cluster);
       } else if (mode == "time") {
         time_scan(argv[i]);
       } else if (mode == "merge") {

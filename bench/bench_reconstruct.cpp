@@ -228,18 +228,8 @@ int main(int argc, char** argv) {
       scanner::HarnessCase c;
       for (int i = 2; i < argc; ++i) {
         const std::string arg = argv[i];
-        if (arg == "--noise" && i + 1 < argc) {
-          c.noise = std::atof(argv[++i]);
-        } else if (arg == "--density" && i + 1 < argc) {
-          c.density = std::atof(argv[++i]);
-        } else if (arg == "--beam-divergence" && i + 1 < argc) {
-          c.beam_divergence = 1e-3 * std::atof(argv[++i]);
-        } else if (arg == "--beam-diameter" && i + 1 < argc) {
-          c.beam_diameter = std::atof(argv[++i]);
-        } else if (arg == "--range-resolution" && i + 1 < argc) {
-          c.range_resolution = std::atof(argv[++i]);
-        } else if (arg == "--registration-error" && i + 1 < argc) {
-          c.registration_error = std::atof(argv[++i]);
+        if (scanner::read_scan_flag(argc, argv, i, c)) {
+          continue;
         } else if (arg == "--opt" && i + 1 < argc) {
           set_option(g_options, argv[++i]);
         } else if (arg == "--stations" && i + 1 < argc) {

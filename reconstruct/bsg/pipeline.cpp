@@ -150,19 +150,14 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
 
   // 4.1: tree bases and terrain.
   auto t = Clock::now();
-  // Stray points (docs/reconstruction.md): the points alone in the air before the bases, which
-  // are found on the points the graph is built from; the small clusters after the terrain, so
-  // that the bases are found as without them (the ground's clutter is made of small clusters too,
-  // and without it treels_spruce's base moved 0.4 m off its trunk). The voxel of the whole cloud
-  // sets the reach of both (the trees' own is chosen after terrain removal, below).
+  // Stray points (StrayPasses): alone in the air now, small clusters after the terrain. The voxel
+  // of the whole cloud sets the reach (the trees' own is chosen after terrain removal, below).
   StrayRule rule;
   rule.min_cluster = o.stray_cluster;
-  double stray_reach = 0;
+  StrayPasses stray(rule);
   if (o.remove_stray) {
-    res.counts.stray_points = drop_stray_points(
-        pts, keep,
-        [&](double spacing) { return stray_reach = 4 * choose_scale(pts, keep, o, spacing).voxel; },
-        {rule.min_neighbours, 0});
+    stray.alone(pts, keep,
+                [&](double spacing) { return 4 * choose_scale(pts, keep, o, spacing).voxel; });
   }
   Bases bases;
   if (o.roots.empty()) {
@@ -178,12 +173,9 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (bases.terrain[i]) keep[i] = 0, ++res.counts.terrain_points;
   }
-  if (o.remove_stray && stray_reach > 0 && !bases.roots.empty())
-    res.counts.stray_points += drop_stray_points(pts, keep, stray_reach, {0, rule.min_cluster});
-  if (res.counts.stray_points > 0) {
-    res.notes.push_back("ignored " + std::to_string(res.counts.stray_points) +
-                        " stray point(s): " + stray_rule_text(rule, "voxels"));
-  }
+  if (!bases.roots.empty()) stray.clusters(pts, keep);
+  res.counts.stray_points = stray.dropped();
+  if (stray.dropped() > 0) res.notes.push_back(stray.note("voxels"));
   if (res.counts.terrain_points + res.counts.stray_points < finite_points.count) {
     scale.voxel = choose_scale(pts, keep, o).voxel;
     res.voxel_size = scale.voxel;

@@ -10,23 +10,6 @@
 
 namespace ramus::bsg {
 
-std::string stray_rule_text(const StrayRule& rule, const std::string& unit) {
-  const int n = rule.min_neighbours;
-  std::string s;
-  if (n > 0) {
-    s = "fewer than " +
-        (n == 1   ? std::string("one other")
-         : n == 2 ? std::string("two others")
-                  : std::to_string(n) + " others") +
-        " within four " + unit;
-  }
-  if (rule.min_cluster > 1) {
-    s += (s.empty() ? "" : ", or ") + std::string("in a cluster of fewer than ") +
-         std::to_string(rule.min_cluster) + " points";
-  }
-  return s;
-}
-
 namespace {
 
 std::uint32_t find_root(std::vector<std::uint32_t>& up, std::uint32_t k) {
@@ -58,42 +41,41 @@ void mark_small_clusters(const std::vector<Eigen::Vector3d>& pts,
                             std::uint32_t(index.count_within(pts[ids[k]], radius, min_cluster));
                       }
                     });
+  // Union-find over the points below the cap; a root's cluster is large when it has
+  // min_cluster points or touches a point with min_cluster within reach.
   std::vector<std::uint32_t> up(ids.size());
   for (std::uint32_t k = 0; k < up.size(); ++k) up[k] = k;
-  std::vector<std::uint8_t> joins_large(ids.size(), 0);
-  std::vector<std::uint32_t> near;
-  for (std::uint32_t k = 0; k < ids.size(); ++k) {
-    if (within[k] >= min_cluster) continue;
-    near.clear();
-    index.within(pts[ids[k]], radius, near);
-    for (std::uint32_t id : near) {
-      const auto other = std::uint32_t(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
-      if (within[other] >= min_cluster)
-        joins_large[k] = 1;
-      else
-        up[find_root(up, k)] = find_root(up, other);
-    }
-  }
-  std::vector<std::uint32_t> size(ids.size(), 0);
   std::vector<std::uint8_t> large(ids.size(), 0);
+  std::vector<std::uint32_t> near;
   bool any_large = false;
   for (std::uint32_t k = 0; k < ids.size(); ++k) {
     if (within[k] >= min_cluster) {
       any_large = true;
       continue;
     }
+    near.clear();
+    index.within(pts[ids[k]], radius, near);
+    for (std::uint32_t id : near) {
+      const auto other = std::uint32_t(std::lower_bound(ids.begin(), ids.end(), id) - ids.begin());
+      if (within[other] >= min_cluster)
+        large[k] = 1;
+      else
+        up[find_root(up, k)] = find_root(up, other);
+    }
+  }
+  std::vector<std::uint32_t> size(ids.size(), 0);
+  for (std::uint32_t k = 0; k < ids.size(); ++k) {
+    if (within[k] >= min_cluster) continue;
     const std::uint32_t r = find_root(up, k);
     ++size[r];
-    large[r] |= joins_large[k];
+    large[r] |= large[k];
   }
-  for (std::uint32_t k = 0; k < ids.size(); ++k) {
-    const std::uint32_t r = find_root(up, k);
-    if (within[k] < min_cluster && size[r] >= min_cluster) large[r] = 1;
-    any_large |= large[r] != 0;
-  }
+  for (std::uint32_t k = 0; k < ids.size(); ++k) any_large |= size[k] >= min_cluster;
   if (!any_large) return;
   for (std::uint32_t k = 0; k < ids.size(); ++k) {
-    if (within[k] < min_cluster && !large[find_root(up, k)]) stray[k] = 1;
+    if (within[k] >= min_cluster) continue;
+    const std::uint32_t r = find_root(up, k);
+    if (!large[r] && size[r] < min_cluster) stray[k] = 1;
   }
 }
 
@@ -162,6 +144,34 @@ std::size_t drop_stray_points(const std::vector<Eigen::Vector3d>& pts,
                               std::vector<std::uint8_t>& keep,
                               const std::function<double(double)>& reach, StrayRule rule) {
   return drop(pts, keep, reach, true, rule);
+}
+
+void StrayPasses::alone(const std::vector<Eigen::Vector3d>& pts, std::vector<std::uint8_t>& keep,
+                        const std::function<double(double)>& reach) {
+  dropped_ += drop_stray_points(pts, keep, [&](double spacing) { return reach_ = reach(spacing); },
+                                {rule_.min_neighbours, 0});
+}
+
+void StrayPasses::clusters(const std::vector<Eigen::Vector3d>& pts,
+                           std::vector<std::uint8_t>& keep) {
+  if (reach_ > 0) dropped_ += drop_stray_points(pts, keep, reach_, {0, rule_.min_cluster});
+}
+
+std::string StrayPasses::note(const std::string& unit) const {
+  const int n = rule_.min_neighbours;
+  std::string s = "ignored " + std::to_string(dropped_) + " stray point(s): ";
+  if (n > 0) {
+    s += "fewer than " +
+         (n == 1   ? std::string("one other")
+          : n == 2 ? std::string("two others")
+                   : std::to_string(n) + " others") +
+         " within four " + unit;
+  }
+  if (rule_.min_cluster > 1) {
+    s += (n > 0 ? ", or " : "") + std::string("in a cluster of fewer than ") +
+         std::to_string(rule_.min_cluster) + " points";
+  }
+  return s;
 }
 
 }  // namespace ramus::bsg

@@ -29,10 +29,6 @@ struct StrayRule {
   std::size_t min_cluster = 1;  // in a cluster of fewer points than this: stray (1: none)
 };
 
-// The rule in words for a note: "fewer than two others within four <unit>[, or in a cluster of
-// fewer than 5 points]"; `unit` names what the reach is four of.
-std::string stray_rule_text(const StrayRule& rule, const std::string& unit);
-
 // Clears keep[i] for every stray kept point: fewer than `rule.min_neighbours` other kept points
 // within `radius` (duplicates of it count), or in a cluster of fewer than `rule.min_cluster`
 // kept points linked by steps shorter than `radius`. Judged against the points kept on entry
@@ -49,5 +45,30 @@ std::size_t drop_stray_points(const std::vector<Eigen::Vector3d>& pts,
 std::size_t drop_stray_points(const std::vector<Eigen::Vector3d>& pts,
                               std::vector<std::uint8_t>& keep,
                               const std::function<double(double)>& reach, StrayRule rule = {});
+
+// The two passes of the pipelines (the BSG's and the flood fill's): the points alone in the air
+// before the tree bases, which are found on the points the graph is built from, with the reach
+// from the median spacing; the small clusters after the terrain, with the same reach, so that
+// the bases are found as without them (the ground's clutter is small clusters too: dropped before
+// the bases, treels_spruce's base moved 0.4 m off its trunk). docs/reconstruction.md, "Stray
+// points", "Runs of a few".
+class StrayPasses {
+ public:
+  explicit StrayPasses(StrayRule rule) : rule_(rule) {}
+  // The neighbour test; `reach(spacing)` as in drop_stray_points.
+  void alone(const std::vector<Eigen::Vector3d>& pts, std::vector<std::uint8_t>& keep,
+             const std::function<double(double)>& reach);
+  // The cluster test, with alone()'s reach (nothing when alone() did not run).
+  void clusters(const std::vector<Eigen::Vector3d>& pts, std::vector<std::uint8_t>& keep);
+  std::size_t dropped() const { return dropped_; }
+  // "ignored N stray point(s): fewer than two others within four <unit>[, or in a cluster of
+  // fewer than 5 points]"; `unit` names what the reach is four of.
+  std::string note(const std::string& unit) const;
+
+ private:
+  StrayRule rule_;
+  double reach_ = 0;
+  std::size_t dropped_ = 0;
+};
 
 }  // namespace ramus::bsg

@@ -422,17 +422,12 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
   }
   const double height = std::max(hi.z - lo.z, 1e-3 * extent);
   // Mixed-pixel returns (docs/reconstruction.md, Stray points): the flood takes each into its
-  // tree's layers and grows a branch to it. Those alone in the air go before the bases, the
-  // small clusters after the terrain, as in the BSG pipeline.
+  // tree's layers and grows a branch to it. The BSG pipeline's two passes (bsg::StrayPasses).
   bsg::StrayRule rule;
   rule.min_cluster = o.stray_cluster;
-  double stray_reach = 0;
-  if (o.remove_stray) {
-    res.counts.stray_points = bsg::drop_stray_points(
-        epts, keep,
-        [&](double spacing) { return stray_reach = 4 * std::max(spacing, 1e-3 * height); },
-        {rule.min_neighbours, 0});
-  }
+  bsg::StrayPasses stray(rule);
+  if (o.remove_stray)
+    stray.alone(epts, keep, [&](double spacing) { return 4 * std::max(spacing, 1e-3 * height); });
 
   // Tree bases and terrain, with the BSG pipeline's default scales (Livny et al. 4.1).
   auto t = Clock::now();
@@ -453,13 +448,9 @@ ReconstructResult flood_reconstruct(const PointCloud& cloud, const FloodOptions&
   for (std::size_t i = 0; i < pts.size(); ++i) {
     if (bases.terrain[i] && keep[i]) keep[i] = 0, ++res.counts.terrain_points;
   }
-  if (o.remove_stray && stray_reach > 0 && !bases.roots.empty())
-    res.counts.stray_points +=
-        bsg::drop_stray_points(epts, keep, stray_reach, {0, rule.min_cluster});
-  if (res.counts.stray_points > 0) {
-    res.notes.push_back("ignored " + std::to_string(res.counts.stray_points) +
-                        " stray point(s): " + bsg::stray_rule_text(rule, "point spacings"));
-  }
+  if (!bases.roots.empty()) stray.clusters(epts, keep);
+  res.counts.stray_points = stray.dropped();
+  if (stray.dropped() > 0) res.notes.push_back(stray.note("point spacings"));
   res.timings.bases = seconds_since(t);
   if (bases.roots.empty()) {
     res.notes.push_back(bases.note.empty() ? "no tree base found" : bases.note);

@@ -182,3 +182,24 @@ TEST_CASE("stray points: the clusters are those of a brute-force search", "[reco
     CHECK(got == expected);
   }
 }
+
+TEST_CASE("stray points: the pipelines' two passes share the first one's reach", "[reconstruct]") {
+  std::vector<Eigen::Vector3d> p = patch();
+  const std::size_t surface = p.size();
+  for (int k = 0; k < 5; ++k) p.emplace_back(0.04 * k, 0.1, 0.2 + 0.1 * k);  // alone
+  for (int k = 0; k < 3; ++k) p.emplace_back(0.1, 0.1, 0.8 + 0.01 * k);      // a run of three
+  std::vector<std::uint8_t> keep(p.size(), 1);
+  bsg::StrayPasses passes({2, 5});
+  passes.clusters(p, keep);  // before alone(): no reach yet, nothing to do
+  CHECK(passes.dropped() == 0);
+  passes.alone(p, keep, [](double spacing) { return 4 * spacing; });
+  CHECK(passes.dropped() == 5);
+  passes.clusters(p, keep);
+  CHECK(passes.dropped() == 8);
+  for (std::size_t i = 0; i < surface; ++i) CHECK(keep[i] == 1);
+  CHECK(passes.note("voxels") ==
+        "ignored 8 stray point(s): fewer than two others within four voxels, or in a cluster of "
+        "fewer than 5 points");
+  CHECK(bsg::StrayPasses({2, 1}).note("point spacings") ==
+        "ignored 0 stray point(s): fewer than two others within four point spacings");
+}

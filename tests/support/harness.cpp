@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdlib>
 #include <stdexcept>
 
 #include "compiler/grow.h"
@@ -89,6 +90,21 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
   r.at_radius = compare_skeletons({truth}, rec.trees, co);
   r.reconstructed = rec.trees;
   return r;
+}
+
+bool read_scan_flag(int argc, char** argv, int& i, HarnessCase& c) {
+  if (i + 1 >= argc) return false;
+  const std::string arg = argv[i];
+  double* field = arg == "--noise"                ? &c.noise
+                  : arg == "--density"            ? &c.density
+                  : arg == "--beam-divergence"    ? &c.beam_divergence
+                  : arg == "--beam-diameter"      ? &c.beam_diameter
+                  : arg == "--range-resolution"   ? &c.range_resolution
+                  : arg == "--registration-error" ? &c.registration_error
+                                                  : nullptr;
+  if (!field) return false;
+  *field = std::atof(argv[++i]) * (arg == "--beam-divergence" ? 1e-3 : 1.0);
+  return true;
 }
 
 }  // namespace ramus::scanner

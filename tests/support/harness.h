@@ -57,4 +57,9 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c, const Rec
 HarnessResult run_harness_on_grammar(const std::string& path, const HarnessCase& c,
                                      const ReconstructOptions& options = {});
 
+// The scan flags the benches share, as `ramus scan` names them: --noise S, --density D,
+// --beam-divergence MRAD, --beam-diameter D, --range-resolution R, --registration-error S.
+// Reads the one at argv[i] into c and steps i over its value; false when argv[i] is none of them.
+bool read_scan_flag(int argc, char** argv, int& i, HarnessCase& c);
+
 }  // namespace ramus::scanner
