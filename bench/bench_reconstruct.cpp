@@ -12,8 +12,10 @@
 // overlap, min_branch, min_cylinder, ground_band, terrain, stray, stray_cluster, centre_lines,
 // extend_tips),
 // --stations N (only N stations instead of 1 and 3), --dump PREFIX (write the truth and the
-// reconstruction as skeleton JSON, the scan as .xyz), --azimuth DEG (turn the tree by DEG about the
-// vertical through its root before scanning: the stations see another side of it), --repeat N
+// reconstruction as skeleton JSON, the scan as .xyz, and the truth samples of the radius classes
+// with their centre-line errors as .centre.txt), --azimuth DEG (turn the tree by DEG about the
+// vertical through its root before scanning: the stations see another side of it), --tree-seed N
+// (grow the grammar, or the synthetic / thick tree, from seed N instead of its own), --repeat N
 // (time: reconstruct each scan N times; cpu= is the least CPU time, user + system of all threads,
 // of one reconstruction). Prints one line per run and the peak resident memory at the end.
 #include <sys/resource.h>
@@ -22,11 +24,13 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <string>
 
 #include "compiler/grow.h"
+#include "core/atomic_file.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
 #include "mesh/tree_mesh.h"
@@ -99,22 +103,42 @@ void set_option(ReconstructOptions& o, const std::string& kv) {
 
 ReconstructOptions g_options;
 std::vector<int> g_stations = {1, 3};  // --stations N: only N stations
-std::string g_dump;    // --dump PREFIX: writes PREFIX<tree>-<stations>.truth.json / .rec.json
+std::string g_dump;    // --dump PREFIX: PREFIX<tree>-<stations>.truth.json, .rec.json, .scan.xyz,
+                       // .centre.txt
 int g_repeat = 1;      // --repeat N: time mode reconstructs each scan N times
 double g_azimuth = 0;  // --azimuth DEG: the tree turned about its root's vertical
+std::uint64_t g_tree_seed = 0;  // --tree-seed N: the tree's seed (0: the grammar's or fixture's)
+
+// One line per truth sample of the radius classes: where the centre-line errors are, for drawing
+// them over the truth, the reconstruction and the scan of the same dump.
+void write_centre_samples(const std::string& path, const std::vector<CentreSample>& samples) {
+  write_file_atomically(path, [&](std::ostream& out) {
+    out << "# x y z dx dy dz radius error/radius seen\n";
+    char line[256];
+    for (const CentreSample& q : samples) {
+      std::snprintf(line, sizeof line, "%.5f %.5f %.5f %.4f %.4f %.4f %.4f %.4f %d\n", q.position.x,
+                    q.position.y, q.position.z, q.direction.x, q.direction.y, q.direction.z,
+                    q.radius, q.error, int(q.seen));
+      out << line;
+    }
+  });
+}
 
 void accuracy(const std::string& path, const scanner::HarnessCase& base) {
   // "synthetic": the thick-branched test tree of tests/reconstruct/reconstruct_fixtures.h;
   // "thick": its 14 m, 60 cm trunk variant (radii 5-60 cm), "thick-small" the 8 m, 30 cm one
   // the tests scan.
-  Skeleton t = path == "synthetic"     ? test::synthetic_tree(7, {0, 0, 0})
-               : path == "thick"       ? test::thick_tree(11, 14.0, 0.6)
-               : path == "thick-small" ? test::thick_tree(5, 8.0, 0.3)
-                                       : grow(path);
+  // --tree-seed N grows another tree of the same kind: trees no parameter was chosen on.
+  const auto seed = [](std::uint64_t own) { return g_tree_seed ? g_tree_seed : own; };
+  Skeleton t = path == "synthetic"     ? test::synthetic_tree(seed(7), {0, 0, 0})
+               : path == "thick"       ? test::thick_tree(seed(11), 14.0, 0.6)
+               : path == "thick-small" ? test::thick_tree(seed(5), 8.0, 0.3)
+                                       : grow(path, g_tree_seed);
   scanner::turn_about_root(t, g_azimuth);
   for (int stations : g_stations) {
     scanner::HarnessCase c = base;
     c.stations = stations;
+    c.keep_samples = !g_dump.empty();
     PointCloud scanned;  // kept for --dump
     const scanner::HarnessResult r = scanner::run_harness(t, c, [&](const PointCloud& cloud) {
       if (!g_dump.empty()) scanned = cloud;
@@ -127,6 +151,7 @@ void accuracy(const std::string& path, const scanner::HarnessCase& base) {
       write_skeleton_json(stem + ".truth.json", t);
       if (!r.reconstructed.empty()) write_skeleton_json(stem + ".rec.json", r.reconstructed[0]);
       write_point_cloud_xyz(stem + ".scan.xyz", scanned);
+      write_centre_samples(stem + ".centre.txt", a.centre_samples);
     }
     std::printf(
         "%s stations=%d points=%zu trees=%zu precision(2r)=%.3f recall(2r)=%.3f "
@@ -238,6 +263,8 @@ int main(int argc, char** argv) {
           g_repeat = std::atoi(argv[++i]);
         } else if (arg == "--azimuth" && i + 1 < argc) {
           g_azimuth = std::atof(argv[++i]);
+        } else if (arg == "--tree-seed" && i + 1 < argc) {
+          g_tree_seed = std::strtoull(argv[++i], nullptr, 10);
         } else if (arg == "--dump" && i + 1 < argc) {
           g_dump = argv[++i];
         } else if (arg == "--leaves") {

@@ -157,6 +157,12 @@ void centre_errors(const std::vector<Skeleton>& rec, const Samples& t,
     rel[k].push_back(best / r);
     all.push_back(best / r);
     if (seen[i]) rel_seen[k].push_back(best / r), all_seen.push_back(best / r);
+    if (o.keep_samples) {
+      const Eigen::Vector3d& q = t.pos[i];
+      const Eigen::Vector3d& d = t.dir[i];
+      c.centre_samples.push_back(
+          {Vec3{q.x(), q.y(), q.z()}, Vec3{d.x(), d.y(), d.z()}, r, best / r, seen[i] != 0});
+    }
   }
   for (std::size_t k = 0; k < classes; ++k) {
     CentreError e;

@@ -30,6 +30,18 @@ struct CompareOptions {
   double seen_arc = 60.0 * 3.14159265358979323846 / 180;
   double bark_band = 0.3;
   double bark_floor = 0.01;
+  // Keep every truth sample of the radius classes with its centre-line error
+  // (SkeletonComparison::centre_samples): where the errors are, for drawing them.
+  bool keep_samples = false;
+};
+
+// One truth sample of a radius class: where it is, its segment's direction, its radius
+// (unfloored), the distance to the nearest reconstructed segment divided by that radius, and
+// whether the scan saw it.
+struct CentreSample {
+  Vec3 position, direction;
+  double radius = 0, error = 0;
+  bool seen = false;
 };
 
 // Centre-line error of one class of truth radii: the distance from each truth sample to the
@@ -62,6 +74,8 @@ struct SkeletonComparison {
   // radius_factor x radius) over those, and the centre-line error's median over the seen
   // samples of all classes.
   double seen_fraction = 0, recall_seen = 0, centre_error_median_seen = 0;
+  // With CompareOptions::keep_samples: the samples behind centre_error, in the truth's order.
+  std::vector<CentreSample> centre_samples;
 };
 
 SkeletonComparison compare_skeletons(const std::vector<Skeleton>& truth,

@@ -1,8 +1,10 @@
 // Skeleton against skeleton (reconstruct/bsg/compare.h): the scores over the wood the scan saw.
 // A truth sample counts as seen when scan points on its bark cover 60 degrees of its
 // circumference; the recall and centre-line error over the seen samples must ignore the rest.
+#include <algorithm>
 #include <catch2/catch.hpp>
 #include <cmath>
+#include <vector>
 
 #include "core/rng.h"
 #include "reconstruct/bsg/compare.h"
@@ -89,4 +91,36 @@ TEST_CASE("compare: without a scan the seen scores stay zero", "[compare]") {
   CHECK(c.seen_fraction == 0.0);
   CHECK(c.centre_error[0].seen == 0);
   CHECK(c.centre_error[0].median == Approx(0.2).margin(0.01));
+}
+
+TEST_CASE("compare: the kept samples are the ones behind the class medians", "[compare]") {
+  const double r = 0.1;
+  PointCloud scan;
+  add_bark(scan, r, 0.0, 1.0, 0, 2 * M_PI, 4);
+  Skeleton rec = stem(r, 0.01);
+  for (SkeletonNode& n : rec.nodes) {
+    if (n.position.z > 1.05) n.position.x = 0.05;
+  }
+  CompareOptions o = options(&scan);
+  CHECK(compare_skeletons({stem(r)}, {rec}, o).centre_samples.empty());
+  o.keep_samples = true;
+  const SkeletonComparison c = compare_skeletons({stem(r)}, {rec}, o);
+  REQUIRE(c.centre_error.size() == 1);
+  REQUIRE(c.centre_samples.size() == c.centre_error[0].samples);
+  std::vector<double> seen;
+  for (const CentreSample& q : c.centre_samples) {
+    CHECK(q.radius == Approx(r));
+    CHECK(q.direction.z == Approx(1.0));
+    // Each error is the distance to the reconstruction over the radius, as placed above (the
+    // edge from 1.0 to 1.1 m crosses between the two offsets).
+    if (q.position.z < 0.99) CHECK(q.error == Approx(0.1).margin(1e-6));
+    if (q.position.z > 1.11) CHECK(q.error == Approx(0.5).margin(1e-6));
+    if (!q.seen) continue;
+    seen.push_back(q.error);
+    // Seen: the lower half, whose bark is scanned (the slab reaches 2.5 cm across its top).
+    CHECK(q.position.z < 1.03);
+  }
+  CHECK(seen.size() == c.centre_error[0].seen);
+  std::sort(seen.begin(), seen.end());
+  CHECK(seen[seen.size() / 2] == Approx(c.centre_error[0].median_seen).margin(1e-6));
 }

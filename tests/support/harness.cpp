@@ -87,6 +87,7 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
   // Centre-line error per class of truth radius (metres): twigs, branches, limbs, stems.
   co.radius_classes = {0.02, 0.05, 0.1, 0.2, 0.4, 0.65};
   co.scan = &scan.cloud;  // the scores over the wood the scan saw, beside those over all of it
+  co.keep_samples = c.keep_samples;
   r.at_radius = compare_skeletons({truth}, rec.trees, co);
   r.reconstructed = rec.trees;
   return r;

@@ -24,6 +24,8 @@ struct HarnessCase {
   // The beam and the stations' registration (ScanOptions): 0, a line and exact stations.
   double beam_divergence = 0, beam_diameter = 0, range_resolution = 0, registration_error = 0;
   std::uint64_t seed = 1;
+  // Keep the truth samples with their centre-line errors (SkeletonComparison::centre_samples).
+  bool keep_samples = false;
 };
 
 struct HarnessResult {
