@@ -112,11 +112,11 @@ TEST_CASE("reconstruct accuracy: synthetic tree scanned from one station", "[acc
 namespace {
 
 scanner::HarnessResult scan_grammar(const char* grammar, int stations,
-                                    const ReconstructOptions& o = {}) {
+                                    const ReconstructOptions& o = {}, std::uint64_t seed = 0) {
   scanner::HarnessCase c;
   c.stations = stations;
   return scanner::run_harness_on_grammar(std::string(RAMUS_SOURCE_DIR "/examples/trees/") + grammar,
-                                         c, o);
+                                         c, o, seed);
 }
 
 void check_targets(const scanner::HarnessResult& r, double min_recall_distance) {
@@ -289,6 +289,37 @@ TEST_CASE("reconstruct accuracy: thick trees from other seeds, one station", "[a
     REQUIRE(r.trees == 1);
     CHECK(a.precision >= 0.95);
     CHECK(a.recall >= 0.9);
+    for (const CentreError& e : a.centre_error) {
+      if (e.lo < 0.05 || e.seen < 100) continue;
+      INFO("radii " << e.lo << "-" << e.hi << ": median seen " << e.median_seen);
+      CHECK(e.median_seen <= 0.15);
+    }
+  }
+}
+
+// The bundled grammars grown from seeds no parameter was chosen on, three stations
+// (docs/reconstruction.md, *Trees no parameter was chosen on*). Measured, precision / recall
+// within 2 x radius: thick_oak from seed 2 0.998 / 0.991, the conifer from seed 1 0.976 / 0.930,
+// the weeping tree from seed 2 0.963 / 0.966, the broadleaf from seed 3 0.956 / 0.852. That
+// broadleaf has 3,301 nodes (1,730 from seed 4, 2,015 from its own, 7), twigs of 1-2 cm radius over
+// 42% of its length, and a fifth of its wood carries no scan point over 60 degrees of its bark: its
+// recall is checked over the seen wood (0.942).
+TEST_CASE("reconstruct accuracy: bundled grammars from other seeds, three stations", "[accuracy]") {
+  struct Case {
+    const char* grammar;
+    std::uint64_t seed;
+    bool all_seen;  // recall over all samples too, not only over the seen ones
+  };
+  for (const Case& k : {Case{"thick_oak.ramus", 2, true}, Case{"conifer.ramus", 1, true},
+                        Case{"weeping.ramus", 2, true}, Case{"broadleaf.ramus", 3, false}}) {
+    const scanner::HarnessResult r = scan_grammar(k.grammar, 3, {}, k.seed);
+    const SkeletonComparison& a = r.at_radius;
+    INFO(k.grammar << " seed " << k.seed << ": precision " << a.precision << " recall " << a.recall
+                   << " recall seen " << a.recall_seen);
+    REQUIRE(r.trees == 1);
+    CHECK(a.precision >= 0.95);
+    CHECK(a.recall_seen >= 0.9);
+    if (k.all_seen) CHECK(a.recall >= 0.9);
     for (const CentreError& e : a.centre_error) {
       if (e.lo < 0.05 || e.seen < 100) continue;
       INFO("radii " << e.lo << "-" << e.hi << ": median seen " << e.median_seen);

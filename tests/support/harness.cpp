@@ -46,10 +46,12 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
 }
 
 HarnessResult run_harness_on_grammar(const std::string& path, const HarnessCase& c,
-                                     const ReconstructOptions& options) {
+                                     const ReconstructOptions& options, std::uint64_t seed) {
   SourceManager sources;
   DiagnosticSink diags;
-  const Skeleton truth = grow_file(path, {}, sources, diags);
+  GrowOptions grow;
+  if (seed) grow.seed = seed;
+  const Skeleton truth = grow_file(path, grow, sources, diags);
   if (truth.size() < 2) throw std::runtime_error(path + " grows no tree");
   return run_harness(truth, c, options);
 }

@@ -53,11 +53,12 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
 using Reconstructor = std::function<ReconstructResult(const PointCloud&)>;
 HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c, const Reconstructor& method);
 
-// The tree a grammar file grows (its own seed and derive count) through run_harness: the setup
-// of the accuracy tests on the bundled grammars. Throws std::runtime_error when the grammar grows
-// no tree.
+// The tree a grammar file grows (its own seed, or `seed` when not 0, and its derive count)
+// through run_harness: the setup of the accuracy tests on the bundled grammars. Throws
+// std::runtime_error when the grammar grows no tree.
 HarnessResult run_harness_on_grammar(const std::string& path, const HarnessCase& c,
-                                     const ReconstructOptions& options = {});
+                                     const ReconstructOptions& options = {},
+                                     std::uint64_t seed = 0);
 
 // The scan flags the benches share, as `ramus scan` names them: --noise S, --density D,
 // --beam-divergence MRAD, --beam-diameter D, --range-resolution R, --registration-error S.
