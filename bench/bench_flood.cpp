@@ -18,7 +18,6 @@
 #include <cstring>
 #include <string>
 
-#include "compiler/grow.h"
 #include "formats/point_cloud_io.h"
 #include "mesh/tree_mesh.h"
 #include "reconstruct/flood/flood_skeleton.h"
@@ -34,12 +33,6 @@ using Clock = std::chrono::steady_clock;
 
 double seconds_since(Clock::time_point t) {
   return std::chrono::duration<double>(Clock::now() - t).count();
-}
-
-Skeleton grow(const std::string& path) {
-  SourceManager sources;
-  DiagnosticSink diags;
-  return grow_file(path, {}, sources, diags);
 }
 
 bool ends_with(const std::string& s, const char* tail) {
@@ -64,7 +57,7 @@ void accuracy(const std::string& path, const scanner::HarnessCase& base, int str
   // tests/reconstruct/reconstruct_fixtures.h.
   const Skeleton truth = path == "thick-small" ? test::thick_tree(5, 8.0, 0.3)
                          : path == "thick"     ? test::thick_tree(11, 14.0, 0.6)
-                                               : grow(path);
+                                               : scanner::grow_grammar(path);
   for (int stations : {1, 3}) {
     scanner::HarnessCase hc = base;
     hc.stations = stations;
@@ -106,7 +99,7 @@ std::size_t bark_triangles(const Skeleton& s) {
 void merging(const std::string& path) {
   Skeleton base;
   if (ends_with(path, ".ramus")) {
-    base = grow(path);
+    base = scanner::grow_grammar(path);
   } else {
     const ReconstructResult r = flood::flood_reconstruct(read_point_cloud(path));
     if (r.trees.empty()) throw std::runtime_error(path + ": no tree");

@@ -29,7 +29,6 @@
 #include <filesystem>
 #include <string>
 
-#include "compiler/grow.h"
 #include "core/atomic_file.h"
 #include "formats/point_cloud_io.h"
 #include "formats/skeleton_json.h"
@@ -40,14 +39,6 @@
 using namespace ramus;
 
 namespace {
-
-Skeleton grow(const std::string& path, std::uint64_t seed = 0) {
-  SourceManager sources;
-  DiagnosticSink diags;
-  GrowOptions o;
-  if (seed) o.seed = seed;
-  return grow_file(path, o, sources, diags);
-}
 
 // Options of a parameter sweep: --opt name=value.
 void set_option(ReconstructOptions& o, const std::string& kv) {
@@ -133,7 +124,7 @@ void accuracy(const std::string& path, const scanner::HarnessCase& base) {
   Skeleton t = path == "synthetic"     ? test::synthetic_tree(seed(7), {0, 0, 0})
                : path == "thick"       ? test::thick_tree(seed(11), 14.0, 0.6)
                : path == "thick-small" ? test::thick_tree(seed(5), 8.0, 0.3)
-                                       : grow(path, g_tree_seed);
+                                       : scanner::grow_grammar(path, g_tree_seed);
   scanner::turn_about_root(t, g_azimuth);
   for (int stations : g_stations) {
     scanner::HarnessCase c = base;
@@ -208,7 +199,7 @@ void scene(const std::string& path, int n) {
   std::vector<std::uint32_t> indices;
   double height = 0, spacing = 0;
   for (int k = 0; k < n; ++k) {
-    Skeleton s = grow(path, std::uint64_t(k + 1));
+    Skeleton s = scanner::grow_grammar(path, std::uint64_t(k + 1));
     Vec3 lo, hi;
     s.bounds(lo, hi);
     height = std::max(height, hi.z - lo.z);

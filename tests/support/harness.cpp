@@ -45,13 +45,17 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
                      [&](const PointCloud& cloud) { return reconstruct(cloud, options); });
 }
 
-HarnessResult run_harness_on_grammar(const std::string& path, const HarnessCase& c,
-                                     const ReconstructOptions& options, std::uint64_t seed) {
+Skeleton grow_grammar(const std::string& path, std::uint64_t seed) {
   SourceManager sources;
   DiagnosticSink diags;
   GrowOptions grow;
   if (seed) grow.seed = seed;
-  const Skeleton truth = grow_file(path, grow, sources, diags);
+  return grow_file(path, grow, sources, diags);
+}
+
+HarnessResult run_harness_on_grammar(const std::string& path, const HarnessCase& c,
+                                     const ReconstructOptions& options, std::uint64_t seed) {
+  const Skeleton truth = grow_grammar(path, seed);
   if (truth.size() < 2) throw std::runtime_error(path + " grows no tree");
   return run_harness(truth, c, options);
 }

@@ -53,6 +53,10 @@ HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c,
 using Reconstructor = std::function<ReconstructResult(const PointCloud&)>;
 HarnessResult run_harness(const Skeleton& truth, const HarnessCase& c, const Reconstructor& method);
 
+// The tree a grammar file grows with its derive count and its own seed, or `seed` when not 0
+// (empty when it grows none). Shared by the harness and the benches.
+Skeleton grow_grammar(const std::string& path, std::uint64_t seed = 0);
+
 // The tree a grammar file grows (its own seed, or `seed` when not 0, and its derive count)
 // through run_harness: the setup of the accuracy tests on the bundled grammars. Throws
 // std::runtime_error when the grammar grows no tree.
