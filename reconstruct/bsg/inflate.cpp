@@ -3,11 +3,14 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "reconstruct/bsg/bsg.h"
-#include "reconstruct/bsg/kdtree.h"
 #include "reconstruct/bsg/refine.h"
+#include "reconstruct/bsg/sample_distance.h"
 
 namespace ramus::bsg {
 
@@ -238,52 +241,6 @@ void compact(Editable& e) {
 
 }  // namespace
 
-double mean_sample_distance(const Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
-                            const std::vector<std::uint32_t>& counts, double edge_sample) {
-  if (bsg.size() < 2 || samples.empty()) return 0.0;
-  // Points along every edge, each remembering its edge; the nearest few give the nearest edge.
-  std::vector<Eigen::Vector3d> along;
-  std::vector<std::uint32_t> edge_of;
-  std::vector<int> steps_of(bsg.size(), 0);
-  std::size_t total = 0;
-  for (std::uint32_t v = 1; v < bsg.size(); ++v) {
-    const Eigen::Vector3d d = bsg.pos[v] - bsg.pos[bsg.parent[v]];
-    steps_of[v] = std::clamp(int(std::ceil(d.norm() / edge_sample)), 1, 1000);
-    total += std::size_t(steps_of[v]) + 1;
-  }
-  along.reserve(total), edge_of.reserve(total);
-  for (std::uint32_t v = 1; v < bsg.size(); ++v) {
-    const Eigen::Vector3d a = bsg.pos[bsg.parent[v]], d = bsg.pos[v] - a;
-    const int steps = steps_of[v];
-    for (int s = 0; s <= steps; ++s) {
-      along.push_back(a + d * (double(s) / steps));
-      edge_of.push_back(v);
-    }
-  }
-  PointIndex index(along);
-  double sum = 0, weight = 0;
-  std::array<std::uint32_t, 4> ids;
-  std::array<double, 4> d2;
-  for (std::size_t i = 0; i < samples.size(); ++i) {
-    const std::size_t n = index.knn(samples[i], ids.size(), ids.data(), d2.data());
-    double best = std::numeric_limits<double>::infinity();
-    for (std::size_t j = 0; j < n; ++j) {
-      const std::uint32_t v = edge_of[ids[j]];
-      // Neighbours on one edge give one distance: each edge is measured once.
-      bool seen = false;
-      for (std::size_t i2 = 0; i2 < j; ++i2) seen |= edge_of[ids[i2]] == v;
-      if (seen) continue;
-      const Eigen::Vector3d a = bsg.pos[bsg.parent[v]], ab = bsg.pos[v] - a;
-      const double l2 = ab.squaredNorm();
-      const double t = l2 > 0 ? std::clamp((samples[i] - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-      best = std::min(best, (samples[i] - a - t * ab).norm());
-    }
-    sum += counts[i] * best;
-    weight += counts[i];
-  }
-  return weight > 0 ? sum / weight : 0.0;
-}
-
 // Eq. 6 asks r_parent = k r_child on every edge with k = (c_parent / c_child)^(1/exponent) (the
 // pipe-model reading of Eq. 5: r^2.5 proportional to the subtree weight). On a tree these n - 1
 // homogeneous equations have a one-dimensional solution space, r = s * r0 with r0 propagated
@@ -356,11 +313,23 @@ int inflate(Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
   // Collapsing moves vertices towards the branch axes, which raises d_avg, which widens the
   // cylinders; the loop runs to the fixed point where nothing more collapses (4.3).
   std::vector<std::vector<Eigen::Vector3d>> absorbed(bsg.size());
+  SampleDistances distances0(samples,
+                             params.edge_sample * (getenv("ES") ? atof(getenv("ES")) : 1.0));
+  struct T {
+    SampleDistances& d;
+    double mean(const Bsg& b, const std::vector<std::uint32_t>& c) {
+      auto t0 = std::chrono::steady_clock::now();
+      double r = d.mean(b, c);
+      if (getenv("RDBG"))
+        fprintf(stderr, "  msd n=%zu %.3f ms %.9g\n", b.size(),
+                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * 1e3,
+                r);
+      return r;
+    }
+  } distances{distances0};
   for (; rounds < 40; ++rounds) {
     importance_weights(bsg, params.own_weight);
-    const double d_avg = params.root_radius > 0
-                             ? 0.0
-                             : mean_sample_distance(bsg, samples, counts, params.edge_sample);
+    const double d_avg = params.root_radius > 0 ? 0.0 : distances.mean(bsg, counts);
     assign_radii(bsg, d_avg, params.exponent, params.root_radius);
     d_current = params.root_radius > 0 ? -1 : d_avg;
     if (collapse_overlaps(bsg, params.overlap, params.min_radius, params.tolerance, &absorbed) == 0)
@@ -371,9 +340,8 @@ int inflate(Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
   importance_weights(bsg, params.own_weight);
   // With a measured root radius d_avg is not used (assign_radii), and not computed.
   const double d_final = params.root_radius > 0 ? 0.0
-                         : d_current >= 0
-                             ? d_current
-                             : mean_sample_distance(bsg, samples, counts, params.edge_sample);
+                         : d_current >= 0       ? d_current
+                                                : distances.mean(bsg, counts);
   assign_radii(bsg, d_final, params.exponent, params.root_radius);
   return rounds;
 }

@@ -20,10 +20,6 @@ struct InflateParams {
   double tolerance = 0;    // shape tolerance of degree-2 collapses (at least the radius)
 };
 
-// Mean distance between the samples (weighted by their point counts) and the BSG's edges.
-double mean_sample_distance(const Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
-                            const std::vector<std::uint32_t>& counts, double edge_sample);
-
 // Radii minimizing Eq. 6 + Eq. 7 for the given d_avg. See the .cpp for why this is exact.
 // With root_radius > 0 the free scale is fixed by the measured trunk instead of Eq. 7.
 void assign_radii(Bsg& bsg, double d_avg, double exponent, double root_radius = 0);

@@ -39,6 +39,16 @@ class PointIndex {
   void within_slab(const Eigen::Vector3d& q, double radius, const Eigen::Vector3d& d, double half,
                    std::vector<std::uint32_t>& out) const;
 
+  // nanoflann's search with the caller's result set (nanoflann's interface: size(), full(),
+  // worstDist() - the squared radius beyond which cells are skipped, read again after every
+  // point - and addPoint(squared distance, index), which receives original indices).
+  template <class Result>
+  void search(const Eigen::Vector3d& q, Result& result) const {
+    if (size() == 0) return;
+    Mapped<Result> mapped{result, *this};
+    tree_->findNeighbors(mapped, q.data(), nanoflann::SearchParams());
+  }
+
   // nanoflann's dataset interface.
   std::size_t kdtree_get_point_count() const { return size(); }
   double kdtree_get_pt(std::size_t i, std::size_t dim) const { return coords_[3 * i + dim]; }
@@ -49,6 +59,18 @@ class PointIndex {
 
  private:
   std::uint32_t original(std::size_t i) const { return ids_.empty() ? std::uint32_t(i) : ids_[i]; }
+
+  template <class Result>
+  struct Mapped {
+    using DistanceType = double;
+    using IndexType = std::uint32_t;
+    Result& result;
+    const PointIndex& index;
+    std::size_t size() const { return result.size(); }
+    bool full() const { return result.full(); }
+    double worstDist() const { return result.worstDist(); }
+    bool addPoint(double d2, std::uint32_t i) { return result.addPoint(d2, index.original(i)); }
+  };
 
   using Tree = nanoflann::KDTreeSingleIndexAdaptor<nanoflann::L2_Simple_Adaptor<double, PointIndex>,
                                                    PointIndex, 3, std::uint32_t>;
