@@ -322,3 +322,19 @@ TEST_CASE("reconstruct accuracy: bundled grammars from other seeds, three statio
     check_centre_classes(a, 0.05, 0.15, Over::seen);
   }
 }
+
+// thick_oak grown from seed 5, one station: the fork node at the trunk's foot had its slab cut
+// across a 47-degree edge from the root and took a 0.43 m circle (truth 0.6) near the residual
+// bound; every clean trunk ring above it up to 4 m then failed the no-thickening test against
+// it, and the trunk ran from 0.3 m off its axis at the foot (40-65 cm class 0.215 r). A firm
+// ring is measured against the nearest firm one below it.
+TEST_CASE("reconstruct accuracy: thick_oak from seed 5, one station: the trunk on its axis",
+          "[accuracy]") {
+  const scanner::HarnessResult r = scan_grammar("thick_oak.ramus", 1, {}, 5);
+  const SkeletonComparison& a = r.at_radius;
+  INFO("precision " << a.precision << " recall seen " << a.recall_seen);
+  REQUIRE(r.trees == 1);
+  CHECK(a.precision >= 0.95);
+  CHECK(a.recall_seen >= 0.95);
+  check_centre_classes(a, 0.05, 0.15, Over::seen);
+}
