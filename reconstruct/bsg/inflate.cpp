@@ -3,10 +3,7 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
-#include <cstdio>
-#include <cstdlib>
 
 #include "reconstruct/bsg/bsg.h"
 #include "reconstruct/bsg/refine.h"
@@ -313,20 +310,7 @@ int inflate(Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
   // Collapsing moves vertices towards the branch axes, which raises d_avg, which widens the
   // cylinders; the loop runs to the fixed point where nothing more collapses (4.3).
   std::vector<std::vector<Eigen::Vector3d>> absorbed(bsg.size());
-  SampleDistances distances0(samples,
-                             params.edge_sample * (getenv("ES") ? atof(getenv("ES")) : 1.0));
-  struct T {
-    SampleDistances& d;
-    double mean(const Bsg& b, const std::vector<std::uint32_t>& c) {
-      auto t0 = std::chrono::steady_clock::now();
-      double r = d.mean(b, c);
-      if (getenv("RDBG"))
-        fprintf(stderr, "  msd n=%zu %.3f ms %.9g\n", b.size(),
-                std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() * 1e3,
-                r);
-      return r;
-    }
-  } distances{distances0};
+  SampleDistances distances(samples, params.edge_sample);
   for (; rounds < 40; ++rounds) {
     importance_weights(bsg, params.own_weight);
     const double d_avg = params.root_radius > 0 ? 0.0 : distances.mean(bsg, counts);
