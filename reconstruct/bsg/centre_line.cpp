@@ -379,9 +379,9 @@ CentreLineResult centre_line(std::vector<Eigen::Vector3d>& pos,
       if (!f.ok && f.own_ok && continues && ra > 0 && f.own_radius >= kPipeChild * ra &&
           f.own_radius <= ra) {
         fits[v].ok = true, fits[v].axis_point = f.own_point, fits[v].radius = f.own_radius;
+        // Firm: it continues the stem below within the pipe model's bounds.
+        fits[v].residual = 0;
       }
-      // A group's circle taken here has no residual of its own recorded (0): it continues the
-      // stem below within the pipe model's bounds, so it counts as firm.
       firm_below[v] = firm_circle(v) ? v : firm;
       fitted_below[v] = fits[v].ok ? v : below;
     }

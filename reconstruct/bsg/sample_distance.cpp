@@ -95,20 +95,21 @@ double SampleDistances::mean(const Bsg& bsg, const std::vector<std::uint32_t>& c
     }
     current[it->second] = 1;
   }
-  // Samples whose nearest edge is gone are searched among all current edges; the others only
-  // among the new ones (an edge that is gone was not nearer than their nearest).
+  // Samples whose nearest edge is gone (it is forgotten) are searched among all current edges;
+  // the others only among the new ones (an edge that is gone was not nearer than their nearest).
   std::vector<std::uint32_t> lost;
+  for (std::uint32_t i = 0; i < samples_.size(); ++i) {
+    if (nearest_[i] != kNone && !current[nearest_[i]]) nearest_[i] = kNone;
+    if (nearest_[i] == kNone) lost.push_back(i);
+  }
   std::vector<std::uint32_t> stamp(ends_.size(), 0);
   std::uint32_t query = 0;
-  for (std::uint32_t i = 0; i < samples_.size(); ++i) {
-    if (nearest_[i] == kNone || !current[nearest_[i]]) lost.push_back(i);
-  }
   if (along_.size() > old_along && lost.size() < samples_.size()) {
     std::vector<std::uint32_t> ids(along_.size() - old_along);
     for (std::size_t k = 0; k < ids.size(); ++k) ids[k] = std::uint32_t(old_along + k);
     const PointIndex fresh(along_, std::move(ids));
     for (std::uint32_t i = 0; i < samples_.size(); ++i) {
-      if (nearest_[i] == kNone || !current[nearest_[i]]) continue;
+      if (nearest_[i] == kNone) continue;
       NearestEdge r(samples_[i], reach_, best_[i], nearest_[i], along_of_, ends_, stamp, ++query);
       fresh.search(samples_[i], r);
       best_[i] = r.best(), nearest_[i] = r.nearest();
@@ -135,12 +136,6 @@ double SampleDistances::mean(const Bsg& bsg, const std::vector<std::uint32_t>& c
     weight += counts[i];
   }
   return weight > 0 ? sum / weight : 0.0;
-}
-
-double mean_sample_distance(const Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
-                            const std::vector<std::uint32_t>& counts, double edge_sample) {
-  SampleDistances distances(samples, edge_sample);
-  return distances.mean(bsg, counts);
 }
 
 }  // namespace ramus::bsg

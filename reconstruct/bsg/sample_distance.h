@@ -39,12 +39,7 @@ class SampleDistances {
   std::vector<std::uint32_t> along_of_;  // the slot of each
   double reach_ = 0;  // no point of an edge is farther than this from its nearest along point
   std::vector<double> best_;            // per sample: the distance to its nearest edge
-  std::vector<std::uint32_t> nearest_;  // and that edge's slot (kNone before the first call)
+  std::vector<std::uint32_t> nearest_;  // and that edge's slot (kNone: to search among all)
 };
-
-// One call of SampleDistances::mean: the mean distance of the samples (weighted by their point
-// counts) to the BSG's edges.
-double mean_sample_distance(const Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
-                            const std::vector<std::uint32_t>& counts, double edge_sample);
 
 }  // namespace ramus::bsg

@@ -13,6 +13,13 @@ using namespace ramus::bsg;
 
 namespace {
 
+// One call of SampleDistances::mean.
+double mean_sample_distance(const Bsg& bsg, const std::vector<Eigen::Vector3d>& samples,
+                            const std::vector<std::uint32_t>& counts, double edge_sample) {
+  SampleDistances distances(samples, edge_sample);
+  return distances.mean(bsg, counts);
+}
+
 // A random tree: each node hangs from an earlier one, a step of about `step` away.
 Bsg random_tree(Rng& rng, int n, double step) {
   Bsg b;
