@@ -59,11 +59,6 @@ namespace {
 // cos 15 degrees: directions this close cut a stem in nearly the same slab.
 constexpr double kSameDirection = 0.966;
 
-// 1/sqrt(2): the radius of either child of a fork of two equal children in the pipe model
-// (Livny et al. 2010, 4.3). A stem that goes on through a node keeps at least this share of the
-// radius below it.
-constexpr double kPipeChild = 0.70710678118654752;
-
 struct SlabFit {
   bool ok = false;
   Eigen::Vector3d axis_point;

@@ -22,6 +22,11 @@
 
 namespace ramus::bsg {
 
+// 1/sqrt(2): the radius of either child of a fork of two equal children in the pipe model
+// (Livny et al. 2010, 4.3). A stem that goes on through a node keeps at least this share of the
+// radius below it.
+inline constexpr double kPipeChild = 0.70710678118654752;
+
 struct CentreLineParams {
   double spacing = 0;  // point spacing of the samples (the voxel): floors every length below
   double noise = 0;    // floor of a fit's residual scale; 0: a quarter of the spacing

@@ -27,11 +27,13 @@ std::size_t fit_chain_cylinders(std::vector<Eigen::Vector3d>& pos,
                                 double noise);
 
 // A node neither a cross-section nor a cylinder placed (not a tip, hint at least `thin`) between
-// two fitted nodes, at most `steps` nodes up and down its heaviest child, moves onto the segment
-// between them when it lies within 1.5 x their radius (plus two spacings) of it; where the way
-// down leaves the node's branch for the stem it grows from, onto the branch's own axis (through
-// the fitted node above and the next one out) instead. Run by
-// fit_chain_cylinders and again after the one-sided sections (one_sided_sections.h).
+// two fitted nodes, at most `steps` nodes up and down its stem, moves onto the segment between
+// them when it lies within 1.5 x their radius (plus two spacings) of it; where the way down
+// leaves the node's branch for the stem it grows from, onto the branch's own axis (through the
+// fitted node above and the next one out) instead. At a fork the stem goes on into the heaviest
+// child, unless that child's fits are thinner than the pipe model allows a stem's continuation
+// (kPipeChild of the fit below) and a straighter child's are not. Run by fit_chain_cylinders and
+// again after the one-sided sections (one_sided_sections.h).
 std::size_t bridge_unfitted(std::vector<Eigen::Vector3d>& pos,
                             const std::vector<std::uint32_t>& parent,
                             const std::vector<double>& hint, std::vector<std::uint8_t>& fitted,

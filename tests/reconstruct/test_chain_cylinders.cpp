@@ -165,3 +165,69 @@ TEST_CASE("bridges: a side branch's unfitted base goes onto its own axis, not th
     }
   }
 }
+
+TEST_CASE(
+    "bridges: the stem goes on into the child its fits and its line call for, not the heaviest",
+    "[centre_line]") {
+  // A trunk up z (nodes 0-2, fitted, 15 cm), an unfitted fork at node 3 lying 2 cm off the axis,
+  // a leader going on up z (nodes 4-7: 4 unfitted on the bark, 5-7 fitted, 13 cm) and a limb
+  // leaving at 30 degrees (nodes 8-11, fitted, 9 cm) that carries a curtain of 30 hanging twig
+  // nodes, so that it is the heavier child (the weeping tree's limbs outweigh its leader). The
+  // limb is thinner than a stem's continuation may be (0.09 < 0.15 / sqrt 2); the leader is not.
+  const Eigen::Vector3d axis_fork(0, 0, 3), d(0.5, 0, std::sqrt(0.75));
+  std::vector<Eigen::Vector3d> pos;
+  std::vector<std::uint32_t> parent;
+  for (int i = 0; i < 3; ++i) pos.emplace_back(0, 0, i), parent.push_back(i ? i - 1 : bsg::kNone);
+  pos.emplace_back(0, -0.02, 3), parent.push_back(2);
+  for (int i = 0; i < 4; ++i) pos.emplace_back(0, 0, 4 + i), parent.push_back(i ? 4 + i - 1 : 3);
+  for (int i = 0; i < 4; ++i)
+    pos.push_back(axis_fork + 0.5 * (i + 1) * d), parent.push_back(i ? 8 + i - 1 : 3);
+  for (int i = 0; i < 30; ++i) {
+    pos.push_back(pos[11] - Eigen::Vector3d(0, 0, 0.05 * (i + 1)));
+    parent.push_back(i ? 12 + i - 1 : 11);
+  }
+  const std::size_t n = pos.size();
+  std::vector<double> hint(n, 0.005), radius(n, 0.0);  // the twigs: thinner than `thin`
+  std::vector<std::uint8_t> fitted(n, 0);
+  for (std::uint32_t v = 0; v < 12; ++v) hint[v] = 0.15, fitted[v] = 1;
+  for (std::uint32_t v : {0, 1, 2}) radius[v] = 0.15;
+  for (std::uint32_t v : {5, 6, 7}) radius[v] = 0.13;
+  for (std::uint32_t v : {8, 9, 10, 11}) radius[v] = 0.09;
+  fitted[3] = fitted[4] = 0;
+  pos[4].y() = -0.1;
+  const std::vector<Eigen::Vector3d> before = pos;
+  SECTION("a thicker leader that runs straight on takes the stem from a heavier, thinner limb") {
+    CHECK(bsg::bridge_unfitted(pos, parent, hint, fitted, radius, 0.01, 0.02) == 2);
+    // The fork and the leader's first node go onto the trunk's line: the chord from the trunk's
+    // node 2 to the leader's first fitted node, not to the limb's (which passes 0.17 m, 1.2 r,
+    // from the fork's place on the axis).
+    CHECK((pos[3] - axis_fork).norm() < 1e-9);
+    CHECK((pos[4] - Eigen::Vector3d(0, 0, 4)).norm() < 1e-9);
+    CHECK(radius[3] == Approx(0.15 + (0.13 - 0.15) / 3));
+  }
+  // Node 3 on the chord from the trunk's node 2 to the limb's first fitted node (8): the stem
+  // kept going on into the heavier child.
+  const auto on_limb_chord = [&] {
+    const Eigen::Vector3d a = before[2], ab = before[8] - a;
+    const double t = std::clamp((before[3] - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0);
+    return (pos[3] - (a + t * ab)).norm() < 1e-9;
+  };
+  SECTION("a heavier child fitted thick enough to go on with the stem keeps it") {
+    for (std::uint32_t v : {8, 9, 10, 11}) radius[v] = 0.11;  // 0.11 > 0.15 / sqrt 2
+    bsg::bridge_unfitted(pos, parent, hint, fitted, radius, 0.01, 0.02);
+    CHECK(on_limb_chord());
+  }
+  SECTION("a straighter child that is thinner than the pipe model allows does not take it") {
+    for (std::uint32_t v : {5, 6, 7}) radius[v] = 0.1;  // 0.1 < 0.15 / sqrt 2: the leader, too
+    bsg::bridge_unfitted(pos, parent, hint, fitted, radius, 0.01, 0.02);
+    CHECK(on_limb_chord());
+  }
+  SECTION("a thicker child that bends away more than the heavier one does not take it") {
+    // The leader leans 60 degrees the other way, the limb 30.
+    const Eigen::Vector3d lean = Eigen::Vector3d(-std::sqrt(3.0), 0, 1).normalized();
+    for (int i = 0; i < 4; ++i) pos[4 + i] = axis_fork + (i + 1) * lean;
+    pos[4].y() = -0.1;
+    bsg::bridge_unfitted(pos, parent, hint, fitted, radius, 0.01, 0.02);
+    CHECK(on_limb_chord());
+  }
+}
