@@ -163,7 +163,13 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
     const CircleFit f = fit_circle(pts, w, noise);
     // A radius far above the hint is a flat arc (a scan's edge, a wall of twigs), not a stem.
     const bool stem = f.valid && f.radius <= p.max_hint_factor * std::max(hint, 2 * p.spacing);
-    if (stem && f.centre.norm() + f.radius > 0.9 * reach && attempt < 3) {
+    // A wider disc only for a circle that fits its points (the residual and inlier limits of a
+    // stem's section): one that misses them is no section the disc cut off, and a wider disc
+    // gathers more of what it misses. On the sparse crown of adtree_ahn3_delft 63 of 157 discs
+    // were regrown for such circles, 10% of the reconstruction's time.
+    const bool sound =
+        f.residual <= p.max_residual * f.radius + noise && f.inlier_fraction >= p.min_inliers;
+    if (stem && sound && f.centre.norm() + f.radius > 0.9 * reach && attempt < 3) {
       r0 = std::min(2 * r0, 1.3 * std::max(f.radius, f.centre.norm()));
       continue;
     }
