@@ -151,25 +151,28 @@ SlabFit fit_slab(const Eigen::Vector3d& x, const Eigen::Vector3d& d, double hint
     }
     if (pts.size() < 8) return out;
     thin_slab(pts, w, p.max_slab_points);
+    // A radius far above the hint is a flat arc (a scan's edge, a wall of twigs), not a stem.
+    auto stem_sized = [&](const CircleFit& f) {
+      return f.valid && f.radius <= p.max_hint_factor * std::max(hint, 2 * p.spacing);
+    };
+    // The residual and inlier limits of a stem's section: the circle fits its points.
+    auto fits_points = [&](const CircleFit& f) {
+      return f.residual <= p.max_residual * f.radius + noise && f.inlier_fraction >= p.min_inliers;
+    };
     // A circle is a stem's cross-section when it is a plausible size and its inliers cover
     // enough arc closely, around a centre not too far from the node.
     auto good = [&](const CircleFit& f, double within) {
-      return f.valid && f.radius <= p.max_hint_factor * std::max(hint, 2 * p.spacing) &&
-             f.coverage >= p.min_coverage && f.inlier_fraction >= p.min_inliers &&
-             f.residual <= p.max_residual * f.radius + noise && f.radius >= p.spacing &&
-             f.centre.norm() + f.radius <= within &&
+      return stem_sized(f) && fits_points(f) && f.coverage >= p.min_coverage &&
+             f.radius >= p.spacing && f.centre.norm() + f.radius <= within &&
              f.centre.norm() <= p.max_shift * f.radius + 2 * p.spacing;
     };
     const CircleFit f = fit_circle(pts, w, noise);
-    // A radius far above the hint is a flat arc (a scan's edge, a wall of twigs), not a stem.
-    const bool stem = f.valid && f.radius <= p.max_hint_factor * std::max(hint, 2 * p.spacing);
-    // A wider disc only for a circle that fits its points (the residual and inlier limits of a
-    // stem's section): one that misses them is no section the disc cut off, and a wider disc
-    // gathers more of what it misses. On the sparse crown of adtree_ahn3_delft 63 of 157 discs
-    // were regrown for such circles, 10% of the reconstruction's time.
-    const bool sound =
-        f.residual <= p.max_residual * f.radius + noise && f.inlier_fraction >= p.min_inliers;
-    if (stem && sound && f.centre.norm() + f.radius > 0.9 * reach && attempt < 3) {
+    // A wider disc only for a circle that fits its points: one that misses them is no section the
+    // disc cut off, and a wider disc gathers more of what it misses. On the sparse crown of
+    // adtree_ahn3_delft 63 of 157 discs were regrown for such circles, 10% of the
+    // reconstruction's time.
+    if (stem_sized(f) && fits_points(f) && f.centre.norm() + f.radius > 0.9 * reach &&
+        attempt < 3) {
       r0 = std::min(2 * r0, 1.3 * std::max(f.radius, f.centre.norm()));
       continue;
     }
