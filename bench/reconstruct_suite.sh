@@ -5,18 +5,22 @@
 #             the 42 scans the reconstruction's parameters were chosen on
 #   seeds     the same trees grown from seeds 1-5 (--tree-seed; the conifer's own is 3), one
 #             station and three: trees no parameter was chosen on
+#   densities the six trees as grown, scanned at 1000, 1500, 3000 (the default every parameter
+#             was chosen at) and 6000 points per square metre, one station and three: whether
+#             the results hold at the spacings real scans have (3.2 down to 1.3 cm)
 # Each line: tree, stations, azimuth or seed, precision / recall within 2 x radius, the recall
 # over the seen wood, and the seen centre-line medians / radius of the classes from 5 cm; then
 # the classes above 0.15 r.
-# usage: bench/reconstruct_suite.sh azimuths|seeds BENCH_RECONSTRUCT [FLAGS...]
+# usage: bench/reconstruct_suite.sh azimuths|seeds|densities BENCH_RECONSTRUCT [FLAGS...]
 #   FLAGS go to every `bench_reconstruct accuracy` run (--opt k=v, the scan flags; words without
 #   spaces);
 #   JOBS runs at once (default 2);
 #   SEEDS the seeds of `seeds` (default "1 2 3 4 5"; 6-10 are a second set no parameter was
-#   chosen on, kept apart when 1-5 had been looked at).
+#   chosen on, kept apart when 1-5 had been looked at);
+#   DENSITIES the densities of `densities` (default "1000 1500 3000 6000").
 set -euo pipefail
-usage="usage: $0 azimuths|seeds BENCH_RECONSTRUCT [FLAGS...]"
-if [ $# -lt 2 ] || { [ "$1" != azimuths ] && [ "$1" != seeds ]; }; then
+usage="usage: $0 azimuths|seeds|densities BENCH_RECONSTRUCT [FLAGS...]"
+if [ $# -lt 2 ] || { [ "$1" != azimuths ] && [ "$1" != seeds ] && [ "$1" != densities ]; }; then
   echo "$usage" >&2
   exit 2
 fi
@@ -36,6 +40,11 @@ for t in $trees; do
       echo "$t 3 --azimuth 0"
       ;;
     seeds) for s in ${SEEDS:-1 2 3 4 5}; do echo "$t 1 --tree-seed $s" && echo "$t 3 --tree-seed $s"; done ;;
+    densities)
+      for d in ${DENSITIES:-1000 1500 3000 6000}; do
+        echo "$t 1 --density $d" && echo "$t 3 --density $d"
+      done
+      ;;
   esac
 done | RS_FLAGS="$*" xargs -P "${JOBS:-2}" -L 1 bash -c '
   key="$(basename "$0" .ramus) st=$1 ${2#--}=$3"
