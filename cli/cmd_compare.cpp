@@ -1,17 +1,21 @@
 // ramus compare A B [--seeds N] [--seed S] [--tree-index T] [--reconstruct bsg|flood] [--voxel V]
-//                   [--picture OUT.png [--picture-also C]...]
+//                   [--within D,...] [--picture OUT.png [--picture-also C]...]
 // Compares the skeletons of two sources -- grammars (.ramus or .rmb, grown over N seeds),
 // skeleton files (.json) or scans (reconstructed). First the shape of B's trees against A:
 // envelope IoU (with the reconstruction's own as the reference line when A is a scan), pieces,
 // axis-locked share, height ratio and trunk lean (docs/shape-measures.md); then the two-sample
 // Kolmogorov-Smirnov distance of their distributions of branch length, branching angle, azimuth,
 // radius ratio, branch order, total length, crown extent and height (docs/skeleton-inference.md,
-// "Fidelity").
+// "Fidelity"). With --within, between the two: the share of B's skeleton within each distance of
+// A's and of A's within it of B's, for a reconstruction against a reference skeleton of the same
+// tree (cli/compare_distance.h).
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
 
 #include "cli/command.h"
+#include "cli/compare_distance.h"
 #include "cli/compare_picture.h"
 #include "cli/compare_shape.h"
 #include "cli/compare_side.h"
@@ -31,6 +35,7 @@ struct CompareArgs {
   ReconstructChoice reconstruct;  // scans: as `ramus infer --method skeleton` reconstructs them
   std::string picture;
   std::vector<std::string> picture_also;  // more grammars or skeletons drawn after B
+  std::vector<double> within;             // distances of the positional comparison
   // Which options the user gave, to refuse those that do not apply to the sources.
   bool given_seeds = false, given_scan_options = false;
 };
@@ -59,6 +64,11 @@ void check_options(const CompareArgs& args) {
   if (args.given_scan_options && !any(SourceKind::Scan)) {
     throw UserError(
         "--tree-index, --reconstruct and --voxel apply to scans, and neither source is a scan");
+  }
+  if (!args.within.empty() && (ka == SourceKind::Grammar || kb == SourceKind::Grammar)) {
+    throw UserError(
+        "--within measures a skeleton against a reference skeleton of the same tree, and a "
+        "grammar's grown trees are not that tree: give skeleton files (.json) or scans");
   }
   if (args.picture.empty() && !args.picture_also.empty())
     throw UserError("--picture-also adds trees to --picture, and there is no --picture");
@@ -94,6 +104,11 @@ int run_compare(const CompareArgs& args, const GlobalOptions& global) {
   // The shape section comes first so that the branch-statistics table ends the output, as
   // scripts that read it from its header to the end expect.
   print_shape_report(measure_shapes(side_a, side_b));
+  if (!args.within.empty()) {
+    std::vector<double> within = args.within;
+    std::sort(within.begin(), within.end());
+    print_distance_report(measure_distances(side_a, side_b, within));
+  }
 
   std::printf("%-16s %8s %8s %12s %12s %7s\n", "measure", "n(A)", "n(B)", "mean(A)", "mean(B)",
               "KS");
@@ -132,6 +147,12 @@ void add_compare(CLI::App& app, const GlobalOptions& global, std::function<int()
                   "the tree of a scan to use (default: the one with the most length)")
       ->check(CLI::NonNegativeNumber);
   add_reconstruct_choice_options(*sub, args->reconstruct, "--reconstruct", "scans: ");
+  sub->add_option("--within", args->within,
+                  "distances (the sources' units), comma-separated, e.g. 0.05,0.1,0.2: the share "
+                  "of B's skeleton within each of reference A's (precision) and of A's within it "
+                  "of B's (recall); skeleton files or scans of the same tree only")
+      ->delimiter(',')
+      ->check(CLI::PositiveNumber);
   output_path(sub->add_option(
       "--picture", args->picture,
       "also draw the scan, its reconstruction and the first 3 grown trees, front and "
@@ -142,7 +163,9 @@ void add_compare(CLI::App& app, const GlobalOptions& global, std::function<int()
   sub->footer(
       "A is the reference. Printed: the envelope IoU of B's trees against A (a scan's own "
       "reconstruction first, as the reference line), pieces, axis-locked share, height ratio "
-      "and trunk lean per tree (docs/shape-measures.md), then the KS distances "
+      "and trunk lean per tree (docs/shape-measures.md), with --within the share of B's skeleton "
+      "within each distance of A's and the converse (docs/reconstruction.md, Accuracy), then "
+      "the KS distances "
       "(docs/skeleton-inference.md, Fidelity). Options that do not apply to the sources are "
       "errors.");
   sub->callback([args, sub, &global, &run] {
