@@ -18,6 +18,7 @@
 #   SEEDS the seeds of `seeds` (default "1 2 3 4 5"; 6-10 are a second set no parameter was
 #   chosen on, kept apart when 1-5 had been looked at);
 #   DENSITIES the densities of `densities` (default "1000 1500 3000 6000").
+# Two outputs (before and after a change) are compared by bench/reconstruct_suite_diff.sh.
 set -euo pipefail
 usage="usage: $0 azimuths|seeds|densities BENCH_RECONSTRUCT [FLAGS...]"
 if [ $# -lt 2 ] || { [ "$1" != azimuths ] && [ "$1" != seeds ] && [ "$1" != densities ]; }; then
