@@ -9,8 +9,10 @@
 #             was chosen at) and 6000 points per square metre, one station and three: whether
 #             the results hold at the spacings real scans have (3.2 down to 1.3 cm)
 # Each line: tree, stations, azimuth or seed, precision / recall within 2 x radius, the recall
-# over the seen wood, and the seen centre-line medians / radius of the classes from 5 cm; then
-# the classes above 0.15 r.
+# over the seen wood, the seen centre-line medians / radius of the classes from 5 cm, and the
+# skeleton's length over the truth's and its tips (reconstructed / true); then the classes above
+# 0.15 r. The length belongs with the medians: a median is the distance from each truth sample to
+# the nearest reconstructed segment, so a second chain beside a stem can lower it.
 # usage: bench/reconstruct_suite.sh azimuths|seeds|densities BENCH_RECONSTRUCT [FLAGS...]
 #   FLAGS go to every `bench_reconstruct accuracy` run (--opt k=v, the scan flags; words without
 #   spaces);
@@ -52,7 +54,8 @@ done | RS_FLAGS="$*" xargs -P "${JOBS:-2}" -L 1 bash -c '
   # shellcheck disable=SC2086 # the flags are words
   "'"$bench"'" accuracy --stations "$1" "$2" "$3" $RS_FLAGS "$0" > "'"$out"'/$key" 2>&1 ||
     echo "FAILED" >> "'"$out"'/$key"'
-printf "%-28s %-13s %-13s %s\n" scan "P / R 2r" "R 2r (seen)" "seen median / r from 5 cm"
+printf "%-28s %-13s %-13s %s\n" scan "P / R 2r" "R 2r (seen)" \
+  "seen median / r from 5 cm, length / truth, tips"
 failed=0
 for f in "$out"/*; do
   key=$(basename "$f")
@@ -64,7 +67,10 @@ for f in "$out"/*; do
   rs=$(grep -o 'recall(2r, seen)=[0-9.]*' "$f" | cut -d= -f2)
   cls=$(grep 'seen=' "$f" | grep -o '\[[0-9]*-[0-9]* cm: [0-9.]*' | grep -v '\[2-5 ' |
     sed 's/\[//; s/ cm: /:/' | tr '\n' ' ' | sed 's/ $//')
-  printf "%-28s %-13s %-13s %s\n" "$key" "$p / $r" "$rs" "$cls" >> "$table"
+  len=$(grep -o ' length=[0-9.]*' "$f" | head -1 | cut -d= -f2)
+  tips=$(grep -o ' tips=[0-9/]*' "$f" | head -1 | cut -d= -f2)
+  printf "%-28s %-13s %-13s %s length:%s tips:%s\n" "$key" "$p / $r" "$rs" "$cls" "$len" "$tips" \
+    >> "$table"
 done
 cat "$table"
 echo "seen classes above 0.15 r:"
