@@ -12,15 +12,14 @@ DistanceReport measure_distances(const CompareSide& a, const CompareSide& b,
   DistanceReport report;
   if (within.empty()) return report;
   report.step = 0.2 * *std::min_element(within.begin(), within.end());
-  for (double d : within) {
-    CompareOptions o;
-    o.spacing = report.step;
-    o.distance = d;
-    const SkeletonComparison c = compare_skeletons(a.trees, b.trees, o);
-    report.rows.push_back({d, c.precision_distance, c.recall_distance});
-    report.length_a = c.length_truth, report.length_b = c.length_reconstructed;
-    report.tips_a = c.branches_truth, report.tips_b = c.branches_reconstructed;
-  }
+  CompareOptions o;
+  o.spacing = report.step;
+  o.distances = within;
+  const SkeletonComparison c = compare_skeletons(a.trees, b.trees, o);
+  for (std::size_t k = 0; k < within.size(); ++k)
+    report.rows.push_back({within[k], c.precision_within[k], c.recall_within[k]});
+  report.length_a = c.length_truth, report.length_b = c.length_reconstructed;
+  report.tips_a = c.branches_truth, report.tips_b = c.branches_reconstructed;
   return report;
 }
 

@@ -49,6 +49,7 @@ Samples sample(const std::vector<Skeleton>& skeletons, double spacing) {
 
 struct Match {
   double within_radius = 0, within_radius_1 = 0, within_distance = 0, mean_distance = 0;
+  std::vector<double> within;  // per CompareOptions::distances
 };
 
 // For each sample of `from`, the nearest sample of `to`; radii come from the truth side. `hit`,
@@ -56,6 +57,7 @@ struct Match {
 Match match(const Samples& from, const Samples& to, bool from_is_truth, const CompareOptions& o,
             std::vector<std::uint8_t>* hit = nullptr) {
   Match m;
+  m.within.assign(o.distances.size(), 0.0);
   if (hit) hit->assign(from.pos.size(), 0);
   if (from.pos.empty() || to.pos.empty()) return m;
   bsg::PointIndex index(to.pos);
@@ -68,10 +70,12 @@ Match match(const Samples& from, const Samples& to, bool from_is_truth, const Co
     if (hit) (*hit)[i] = d <= o.radius_factor * r;
     m.within_radius_1 += d <= r;
     m.within_distance += d <= o.distance;
+    for (std::size_t k = 0; k < o.distances.size(); ++k) m.within[k] += d <= o.distances[k];
     m.mean_distance += d;
   }
   const double n = double(from.pos.size());
   m.within_radius /= n, m.within_radius_1 /= n, m.within_distance /= n, m.mean_distance /= n;
+  for (double& w : m.within) w /= n;
   return m;
 }
 
@@ -204,6 +208,8 @@ SkeletonComparison compare_skeletons(const std::vector<Skeleton>& truth,
   c.precision_1r = precision.within_radius_1;
   c.recall_1r = recall.within_radius_1;
   c.recall_distance = recall.within_distance;
+  c.precision_within = precision.within;
+  c.recall_within = recall.within;
   c.chamfer = 0.5 * (precision.mean_distance + recall.mean_distance);
   c.length_truth = t.length;
   c.length_reconstructed = r.length;

@@ -12,6 +12,8 @@ namespace ramus {
 struct CompareOptions {
   double radius_factor = 2.0;  // a sample matches when within radius_factor x the truth radius
   double distance = 0.1;       // ... or, for the fixed-distance scores, within this distance
+  // Further fixed distances, scored in the same matching pass (SkeletonComparison::within).
+  std::vector<double> distances;
   double spacing = 0.02;       // sampling step along segments
   double min_radius = 0.0;     // floor under truth radii (thin twigs), in the cloud's units
   // Bounds of the radius classes of the centre-line error (truth radii, unfloored), ascending:
@@ -64,6 +66,8 @@ struct SkeletonComparison {
   double recall_1r = 0;           // evaluation reports 1x and 2x)
   double precision_distance = 0;  // the same within the fixed distance
   double recall_distance = 0;
+  // Per CompareOptions::distances, in its order: the shares within each.
+  std::vector<double> precision_within, recall_within;
   double chamfer = 0;  // mean of the two mean nearest-sample distances
   double length_truth = 0, length_reconstructed = 0;
   double length_ratio = 0;                                     // reconstructed / truth

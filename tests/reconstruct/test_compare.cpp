@@ -124,3 +124,21 @@ TEST_CASE("compare: the kept samples are the ones behind the class medians", "[c
   std::sort(seen.begin(), seen.end());
   CHECK(seen[seen.size() / 2] == Approx(c.centre_error[0].median_seen).margin(1e-6));
 }
+
+TEST_CASE("compare: further fixed distances are scored in the same pass", "[compare]") {
+  // A stem 3 cm beside the truth: every sample is 3 cm from the other's nearest.
+  CompareOptions o;
+  o.spacing = 0.01;
+  o.distance = 0.05;
+  o.distances = {0.02, 0.05, 0.1};
+  const SkeletonComparison c = compare_skeletons({stem(0.1)}, {stem(0.1, 0.03)}, o);
+  REQUIRE(c.precision_within.size() == 3);
+  REQUIRE(c.recall_within.size() == 3);
+  CHECK(c.precision_within == std::vector<double>{0, 1, 1});
+  CHECK(c.recall_within == std::vector<double>{0, 1, 1});
+  // The one fixed distance and the same one in the list agree.
+  CHECK(c.precision_within[1] == c.precision_distance);
+  CHECK(c.recall_within[1] == c.recall_distance);
+  o.distances.clear();
+  CHECK(compare_skeletons({stem(0.1)}, {stem(0.1, 0.03)}, o).precision_within.empty());
+}

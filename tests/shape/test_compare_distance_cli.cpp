@@ -46,14 +46,18 @@ Row row_for(const std::string& out, const std::string& within) {
   return {};
 }
 
+// `ramus compare A B --within WITHIN` on two skeleton files written into `tmp`.
+CliResult compare_within(const TempDir& tmp, const std::string& a_json, const std::string& b_json,
+                         const std::string& within) {
+  const fs::path a = tmp.write("a.json", a_json), b = tmp.write("b.json", b_json);
+  return run_ramus_split(tmp.path, {"compare", a.string(), b.string(), "--within", within});
+}
+
 }  // namespace
 
 TEST_CASE("compare distance cli: a skeleton 7 cm beside its reference", "[shape]") {
   TempDir tmp;
-  const fs::path a = tmp.write("a.json", tree_json(0, true));
-  const fs::path b = tmp.write("b.json", tree_json(0.07, true));
-  const CliResult r =
-      run_ramus_split(tmp.path, {"compare", a.string(), b.string(), "--within", "0.1,0.05"});
+  const CliResult r = compare_within(tmp, tree_json(0, true), tree_json(0.07, true), "0.1,0.05");
   INFO(r.out << r.err);
   REQUIRE(r.status == 0);
   // Every sample of either is 7 cm from the other's (sampled every 1 cm, a fifth of 5 cm).
@@ -71,10 +75,7 @@ TEST_CASE("compare distance cli: a skeleton 7 cm beside its reference", "[shape]
 
 TEST_CASE("compare distance cli: a skeleton missing a branch of its reference", "[shape]") {
   TempDir tmp;
-  const fs::path a = tmp.write("a.json", tree_json(0, true));
-  const fs::path b = tmp.write("b.json", tree_json(0, false));
-  const CliResult r =
-      run_ramus_split(tmp.path, {"compare", a.string(), b.string(), "--within", "0.05"});
+  const CliResult r = compare_within(tmp, tree_json(0, true), tree_json(0, false), "0.05");
   INFO(r.out << r.err);
   REQUIRE(r.status == 0);
   const Row row = row_for(r.out, "0.05");
@@ -83,8 +84,7 @@ TEST_CASE("compare distance cli: a skeleton missing a branch of its reference", 
   CHECK(row.recall == Approx(309.0 / 447.0).margin(0.005));
   CHECK(r.out.find("length: A 4.414, B 3 (B / A 0.6796); tips: A 2, B 1") != std::string::npos);
   // The converse: B as the reference.
-  const CliResult c =
-      run_ramus_split(tmp.path, {"compare", b.string(), a.string(), "--within", "0.05"});
+  const CliResult c = compare_within(tmp, tree_json(0, false), tree_json(0, true), "0.05");
   REQUIRE(c.status == 0);
   CHECK(row_for(c.out, "0.05").recall == 1);
   CHECK(row_for(c.out, "0.05").precision == Approx(309.0 / 447.0).margin(0.005));
