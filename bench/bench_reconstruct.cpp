@@ -10,7 +10,7 @@
 // error), --opt name=value (a ReconstructOptions field, for parameter sweeps: voxel,
 // voxel_spacings, voxel_floor, neighbours, max_gap, hidden_limb_reach, contraction, iterations,
 // overlap, min_branch, min_cylinder, ground_band, terrain, stray, stray_cluster, centre_lines,
-// extend_tips),
+// join_coincident, extend_tips),
 // --stations N (only N stations instead of 1 and 3), --dump PREFIX (write the truth and the
 // reconstruction as skeleton JSON, the scan as .xyz, and the truth samples of the radius classes
 // with their centre-line errors as .centre.txt), --azimuth DEG (turn the tree by DEG about the
@@ -64,6 +64,8 @@ void set_option(ReconstructOptions& o, const std::string& kv) {
     o.axis_levels = int(v);
   else if (k == "axis_linearity")
     o.axis_linearity = v;
+  else if (k == "join_coincident")
+    o.join_coincident = v != 0;
   else if (k == "axis_passes")
     o.axis_passes = int(v);
   else if (k == "iterations")

@@ -82,6 +82,9 @@ struct ReconstructOptions {
   // Centre lines (docs/reconstruction.md): after 4.3, every node moves to the axis of a robust
   // circle fitted to its cross-section, where the fit is good, and takes the fitted radius.
   bool centre_lines = true;
+  // With them, chains they put on one axis (the BSG's parallel paths up a thick stem's bark, one
+  // to each branch it carries) are joined into one (docs/reconstruction.md, Centre lines, 11).
+  bool join_coincident = true;
   // Tips (docs/reconstruction.md): every branch tip walks on along its branch while samples no
   // other edge claims lie ahead of it (the stages before pull tips back by a voxel or two each).
   bool extend_tips = true;

@@ -11,6 +11,7 @@
 #include "reconstruct/bsg/bridge.h"
 #include "reconstruct/bsg/centre_line.h"
 #include "reconstruct/bsg/chain_order.h"
+#include "reconstruct/bsg/coincident_chains.h"
 #include "reconstruct/bsg/finite_points.h"
 #include "reconstruct/bsg/forest.h"
 #include "reconstruct/bsg/fork_placement.h"
@@ -106,7 +107,8 @@ std::vector<Bsg> refined_trees(const Graph& g, const Forest& f,
 // Centre lines (docs/reconstruction.md): long edges split so that curved stems get cross-sections
 // of their own, then nodes onto the fitted axes of the wood and radii from the same fits.
 void centre_tree(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
-                 const std::vector<std::uint32_t>& counts, const PointIndex& index, double voxel) {
+                 const std::vector<std::uint32_t>& counts, const PointIndex& index, double voxel,
+                 bool join_coincident) {
   CentreLineParams cp;
   cp.spacing = voxel;
   subdivide_long_edges(b, voxel, cp.min_hint_spacings * voxel);
@@ -125,6 +127,11 @@ void centre_tree(Bsg& b, const std::vector<Eigen::Vector3d>& samples,
   drop_branches_inside_stems(b, fitted, voxel);
   return_nodes_behind_forks(b, cp.min_hint_spacings * voxel);
   order_chains_along_axes(b, cp.min_hint_spacings * voxel);
+  if (join_coincident) {
+    CoincidentChainParams mp;
+    mp.spacing = voxel;
+    join_coincident_chains(b, mp);
+  }
 }
 
 }  // namespace
@@ -286,7 +293,8 @@ ReconstructResult reconstruct(const PointCloud& cloud, const ReconstructOptions&
     inflate(trees[k], samples[k], counts[k], tp);
     if (o.centre_lines || o.extend_tips) {
       const PointIndex index(samples[k]);  // both steps search the tree's samples
-      if (o.centre_lines) centre_tree(trees[k], samples[k], counts[k], index, scale.voxel);
+      if (o.centre_lines)
+        centre_tree(trees[k], samples[k], counts[k], index, scale.voxel, o.join_coincident);
       if (o.extend_tips) {
         TipExtensionParams xp;
         xp.spacing = scale.voxel;

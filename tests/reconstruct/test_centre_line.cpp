@@ -11,6 +11,7 @@
 #include "core/rng.h"
 #include "reconstruct/bsg/centre_line.h"
 #include "reconstruct/bsg/circle_fit.h"
+#include "tests/reconstruct/bsg_fixtures.h"
 #include "tests/reconstruct/reconstruct_fixtures.h"
 #include "tests/support/harness.h"
 
@@ -335,10 +336,8 @@ TEST_CASE("centre line: a copy of the trunk hung from a limb's base goes, a twig
   bsg::Bsg b;
   std::vector<std::uint8_t> fitted;
   auto add = [&](Eigen::Vector3d p, std::uint32_t parent, double r, bool fit) {
-    b.pos.push_back(p), b.parent.push_back(parent), b.vertex.push_back(bsg::kNone);
-    b.weight.push_back(1), b.radius.push_back(r), b.mass.push_back(1);
     fitted.push_back(fit);
-    return std::uint32_t(b.size() - 1);
+    return test::add_bsg_node(b, p, parent, r);
   };
   std::uint32_t up = bsg::kNone;
   for (int k = 0; k <= 5; ++k) up = add({0, 0, 0.5 * k}, up, 0.2, true);

@@ -8,6 +8,7 @@
 #include "../skeleton_infer/skeleton_fixtures.h"
 #include "reconstruct/bsg/bsg.h"
 #include "reconstruct/bsg/chain_order.h"
+#include "tests/reconstruct/bsg_fixtures.h"
 #include "tests/support/harness.h"
 
 using namespace ramus;
@@ -19,14 +20,7 @@ namespace {
 bsg::Bsg make_bsg(const std::vector<Eigen::Vector3d>& pos, const std::vector<std::uint32_t>& parent,
                   double radius) {
   bsg::Bsg b;
-  for (std::size_t i = 0; i < pos.size(); ++i) {
-    b.pos.push_back(pos[i]);
-    b.parent.push_back(parent[i]);
-    b.vertex.push_back(kNone);
-    b.weight.push_back(1.0);
-    b.radius.push_back(radius);
-    b.mass.push_back(1.0);
-  }
+  for (std::size_t i = 0; i < pos.size(); ++i) test::add_bsg_node(b, pos[i], parent[i], radius);
   return b;
 }
 

@@ -3,35 +3,27 @@
 #include <cmath>
 
 #include "reconstruct/bsg/fork_placement.h"
+#include "tests/reconstruct/bsg_fixtures.h"
 
 using namespace ramus::bsg;
+using ramus::test::add_bsg_node;
 
 namespace {
-
-std::uint32_t add(Bsg& b, const Eigen::Vector3d& p, std::uint32_t parent, double r) {
-  b.pos.push_back(p);
-  b.parent.push_back(parent);
-  b.vertex.push_back(kNone);
-  b.weight.push_back(1);
-  b.radius.push_back(r);
-  b.mass.push_back(1);
-  return std::uint32_t(b.size() - 1);
-}
 
 // A stem of radius 0.2 along z (nodes every 0.25 m up to 2.5 m) and a limb of radius 0.1 whose
 // axis leaves the stem's axis at z = 1 at 40 degrees; the BSG hung the limb from the crotch node
 // at z = 1.5 (as the shortest paths along the bark do). Every node is fitted.
 Bsg crotch(std::uint32_t& limb, std::uint32_t& crotch_node) {
   Bsg b;
-  std::uint32_t up = add(b, {0, 0, 0}, kNone, 0.2);
+  std::uint32_t up = add_bsg_node(b, {0, 0, 0}, kNone, 0.2);
   for (int k = 1; k <= 10; ++k) {
-    up = add(b, {0, 0, 0.25 * k}, up, 0.2);
+    up = add_bsg_node(b, {0, 0, 0.25 * k}, up, 0.2);
     if (k == 6) crotch_node = up;
   }
   const Eigen::Vector3d d(std::sin(40 * M_PI / 180), 0, std::cos(40 * M_PI / 180));
   up = crotch_node;
   for (int k = 0; k < 4; ++k) {
-    up = add(b, Eigen::Vector3d(0, 0, 1) + (0.6 + 0.3 * k) * d, up, 0.1);
+    up = add_bsg_node(b, Eigen::Vector3d(0, 0, 1) + (0.6 + 0.3 * k) * d, up, 0.1);
     if (k == 0) limb = up;
   }
   return b;
@@ -66,10 +58,10 @@ TEST_CASE("fork placement: unfitted limbs and forks already on the axis stay", "
   CHECK(b.parent[limb] == crotch_node);
   // A limb whose axis meets the stem at its fork.
   Bsg c;
-  std::uint32_t up = add(c, {0, 0, 0}, kNone, 0.2);
-  for (int k = 1; k <= 8; ++k) up = add(c, {0, 0, 0.25 * k}, up, 0.2);
+  std::uint32_t up = add_bsg_node(c, {0, 0, 0}, kNone, 0.2);
+  for (int k = 1; k <= 8; ++k) up = add_bsg_node(c, {0, 0, 0.25 * k}, up, 0.2);
   std::uint32_t side = 4;
-  for (int k = 1; k <= 3; ++k) side = add(c, {0.3 * k, 0, 1 + 0.3 * k}, side, 0.1);
+  for (int k = 1; k <= 3; ++k) side = add_bsg_node(c, {0.3 * k, 0, 1 + 0.3 * k}, side, 0.1);
   std::vector<std::uint8_t> all(c.size(), 1);
   CHECK(place_forks(c, all, 0.02) == 0);
 }
@@ -79,14 +71,14 @@ TEST_CASE("fork placement: a limb whose axis meets the stem between two nodes ge
   // The limb's nodes come before the stem's continuation (the fork's children in that order),
   // and its axis meets the stem at z = 1.6, between the stem nodes at 1.5 (the fork) and 1.75.
   Bsg b;
-  std::uint32_t fork = add(b, {0, 0, 0}, kNone, 0.2);
-  for (int k = 1; k <= 6; ++k) fork = add(b, {0, 0, 0.25 * k}, fork, 0.2);
+  std::uint32_t fork = add_bsg_node(b, {0, 0, 0}, kNone, 0.2);
+  for (int k = 1; k <= 6; ++k) fork = add_bsg_node(b, {0, 0, 0.25 * k}, fork, 0.2);
   const Eigen::Vector3d d(std::sin(40 * M_PI / 180), 0, std::cos(40 * M_PI / 180));
   std::uint32_t up = fork;
   for (int k = 0; k < 4; ++k)
-    up = add(b, Eigen::Vector3d(0, 0, 1.6) + (0.3 + 0.3 * k) * d, up, 0.1);
+    up = add_bsg_node(b, Eigen::Vector3d(0, 0, 1.6) + (0.3 + 0.3 * k) * d, up, 0.1);
   up = fork;
-  for (int k = 7; k <= 10; ++k) up = add(b, {0, 0, 0.25 * k}, up, 0.2);
+  for (int k = 7; k <= 10; ++k) up = add_bsg_node(b, {0, 0, 0.25 * k}, up, 0.2);
   const std::size_t before = b.size();
   std::vector<std::uint8_t> fitted(b.size(), 1);
   CHECK(place_forks(b, fitted, 0.02) == 1);

@@ -201,7 +201,8 @@ TEST_CASE("reconstruct accuracy: bundled weeping grammar, one station, defaults"
 // that the shortest paths of the BSG run along the bark. Without centre lines (measured): median
 // centre-line error / radius 0.43 over the 2-40 cm classes, length 3.95 x the truth with 318 tips
 // for 25. With them: 0.056 / 0.020 / 0.104 / 0.003 in the classes 2-5 / 5-10 / 10-20 / 20-40 cm,
-// precision / recall within 2 x radius 0.999 / 0.992, length 1.51, 48 tips.
+// precision / recall within 2 x radius 0.999 / 0.992, length 1.51, 48 tips. Now, with the copies
+// of stems on one axis joined (coincident_chains.h), 1.000 / 0.995, length 1.01 (1.12 without).
 namespace {
 
 // Which samples a class median is over: all of the class's, the ones the reconstruction found
@@ -234,7 +235,7 @@ TEST_CASE("reconstruct accuracy: thick tree, three stations: nodes on the axes",
   CHECK(a.precision >= 0.95);
   CHECK(a.recall >= 0.9);
   check_centre_classes(a, 0.05, 0.15, Over::all);
-  CHECK(a.length_ratio < 1.7);
+  CHECK(a.length_ratio < 1.1);
   ReconstructOptions off;
   off.centre_lines = false;
   const scanner::HarnessResult b = scanner::run_harness(truth, c, off);

@@ -14,6 +14,7 @@
 #include "reconstruct/bsg/bsg.h"
 #include "reconstruct/bsg/kdtree.h"
 #include "reconstruct/bsg/stem_tracking.h"
+#include "tests/reconstruct/bsg_fixtures.h"
 #include "tests/support/harness.h"
 
 using namespace ramus;
@@ -74,14 +75,8 @@ bsg::Bsg wandering_skeleton(std::vector<std::uint8_t>& fitted, double base_top =
                             const std::vector<std::pair<double, double>>& drift = {}) {
   bsg::Bsg b;
   auto add = [&](const Eigen::Vector3d& p, std::uint32_t parent, double r, bool fit) {
-    b.pos.push_back(p);
-    b.parent.push_back(parent);
-    b.vertex.push_back(bsg::kNone);
-    b.weight.push_back(1.0);
-    b.radius.push_back(r);
-    b.mass.push_back(1.0);
     fitted.push_back(fit);
-    return std::uint32_t(b.pos.size() - 1);
+    return test::add_bsg_node(b, p, parent, r);
   };
   std::uint32_t last = bsg::kNone;
   const auto& [e1, e2] = kAcross;

@@ -1,0 +1,38 @@
+// Chains that the centre lines put on one axis, joined into one. On a thick stem scanned from
+// all sides the BSG's shortest paths run up the bark in several parallel lines (Livny et al.
+// 2010, 4.1), one for each branch the stem carries: each path goes up its own side of the stem
+// to where its branch leaves. The centre lines (centre_line.h) move every fitted node onto the
+// stem's axis, so the paths end up on top of each other: the 14 m harness tree of seed 2 from
+// three stations had four copies of its trunk from the root, 52 of its 136 m of skeleton within
+// 3 cm of another chain, and 1.41 x the truth's length. drop_branches_inside_stems removes a
+// copy only when it is a leaf chain; these go on into their branches.
+// docs/reconstruction.md, "Centre lines", step 11.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+#include "reconstruct/bsg/bsg.h"
+
+namespace ramus::bsg {
+
+struct CoincidentChainParams {
+  double spacing = 0;  // the voxel: the graph does not tell apart two chains closer than it
+  // Coincident: within max(spacings x spacing, radius_share x the larger radius) and running
+  // within acos(cos_parallel) of each other.
+  double spacings = 1.0;
+  double radius_share = 0.25;
+  double cos_parallel = 0.866;
+};
+
+// In parent-first order, every node is joined to the edge of another chain that runs within
+// the tolerance above, the same way, on the tree ahead of the node's parent (below it, by a path
+// no longer than the node's own step plus twice the tolerance: not round a loop): the node moves
+// onto that edge and splits it, keeping its children. So a copy of a stem is zipped into the
+// first node by node, and where it leaves the stem its branch leaves from the stem's one chain;
+// a chain that runs within the tolerance of no other is unchanged. Keeps parents before children
+// (depth first). Returns the number of nodes joined.
+std::size_t join_coincident_chains(Bsg& bsg, const CoincidentChainParams& params);
+
+}  // namespace ramus::bsg
