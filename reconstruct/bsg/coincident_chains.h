@@ -3,9 +3,10 @@
 // 2010, 4.1), one for each branch the stem carries: each path goes up its own side of the stem
 // to where its branch leaves. The centre lines (centre_line.h) move every fitted node onto the
 // stem's axis, so the paths end up on top of each other: the 14 m harness tree of seed 2 from
-// three stations had four copies of its trunk from the root, 52 of its 136 m of skeleton within
-// 3 cm of another chain, and 1.41 x the truth's length. drop_branches_inside_stems removes a
-// copy only when it is a leaf chain; these go on into their branches.
+// three stations had three chains up its trunk from the root (four in places), 52 of its 136 m
+// of skeleton within 3 cm of another chain, and 1.41 x the truth's length.
+// drop_branches_inside_stems removes a copy only when it is a leaf chain; these go on into their
+// branches.
 // docs/reconstruction.md, "Centre lines", step 11.
 #pragma once
 
