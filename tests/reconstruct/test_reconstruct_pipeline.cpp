@@ -36,8 +36,9 @@ TEST_CASE("reconstruct: one synthetic tree is recovered within twice its radius"
   CHECK(c.precision >= 0.9);
   CHECK(c.recall >= 0.8);
   CHECK(c.length_ratio > 0.8);
-  // The 20% length target is not met yet (surplus parallel chains): see docs/reconstruction.md.
-  CHECK(c.length_ratio < 3.0);
+  // The 20% length target (measured: 0.99; before the centre lines and the joined chains, up
+  // to 3 x from parallel chains along the stems).
+  CHECK(c.length_ratio < 1.2);
   // Leaves hang from tips only, 20 to 50 each.
   const auto ch = r.trees[0].children();
   for (const OrganAnchor& a : r.trees[0].organs) CHECK(ch.count(a.node) == 0);
@@ -68,8 +69,9 @@ TEST_CASE("reconstruct: two trees in one scan are separated without pre-segmenta
   INFO("precision " << c.precision << " length ratio " << c.length_ratio);
   CHECK(c.precision >= 0.9);
   CHECK(c.length_ratio > 0.8);
-  // The 20% length target is not met yet (surplus parallel chains): see docs/reconstruction.md.
-  CHECK(c.length_ratio < 3.0);
+  // The 20% length target (measured: 0.98; before the centre lines and the joined chains, up
+  // to 3 x from parallel chains along the stems).
+  CHECK(c.length_ratio < 1.2);
 }
 
 TEST_CASE("reconstruct: terrain points are removed and do not become branches",
@@ -90,8 +92,9 @@ TEST_CASE("reconstruct: terrain points are removed and do not become branches",
   const SkeletonComparison c = compare_skeletons({truth}, r.trees, compare_options());
   INFO("precision " << c.precision << " length ratio " << c.length_ratio);
   CHECK(c.precision >= 0.9);
-  // The 20% length target is not met yet (surplus parallel chains): see docs/reconstruction.md.
-  CHECK(c.length_ratio < 3.0);
+  // The 20% length target (measured: 1.11; before the centre lines and the joined chains, up
+  // to 3 x from parallel chains along the stems).
+  CHECK(c.length_ratio < 1.2);
 }
 
 TEST_CASE("reconstruct: the same cloud and seed give identical skeletons", "[reconstruct]") {
