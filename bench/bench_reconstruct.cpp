@@ -64,8 +64,6 @@ void set_option(ReconstructOptions& o, const std::string& kv) {
     o.axis_levels = int(v);
   else if (k == "axis_linearity")
     o.axis_linearity = v;
-  else if (k == "join_coincident")
-    o.join_coincident = v != 0;
   else if (k == "axis_passes")
     o.axis_passes = int(v);
   else if (k == "iterations")
@@ -80,6 +78,8 @@ void set_option(ReconstructOptions& o, const std::string& kv) {
     o.ground_band = v;
   else if (k == "centre_lines")
     o.centre_lines = v != 0;
+  else if (k == "join_coincident")
+    o.join_coincident = v != 0;
   else if (k == "extend_tips")
     o.extend_tips = v != 0;
   else if (k == "exponent")

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <utility>
 
 #include "reconstruct/bsg/bsg.h"
 #include "reconstruct/bsg/centre_line.h"
@@ -48,16 +49,17 @@ Samples sample(const std::vector<Skeleton>& skeletons, double spacing) {
 }
 
 struct Match {
-  double within_radius = 0, within_radius_1 = 0, within_distance = 0, mean_distance = 0;
-  std::vector<double> within;  // per CompareOptions::distances
+  double within_radius = 0, within_radius_1 = 0, mean_distance = 0;
+  std::vector<double> within;  // per distance of `distances`
 };
 
 // For each sample of `from`, the nearest sample of `to`; radii come from the truth side. `hit`,
 // when given, gets per sample of `from` whether it is within radius_factor x the radius.
+// `distances`: the fixed distances scored, each a share of the samples of `from`.
 Match match(const Samples& from, const Samples& to, bool from_is_truth, const CompareOptions& o,
-            std::vector<std::uint8_t>* hit = nullptr) {
+            const std::vector<double>& distances, std::vector<std::uint8_t>* hit = nullptr) {
   Match m;
-  m.within.assign(o.distances.size(), 0.0);
+  m.within.assign(distances.size(), 0.0);
   if (hit) hit->assign(from.pos.size(), 0);
   if (from.pos.empty() || to.pos.empty()) return m;
   bsg::PointIndex index(to.pos);
@@ -69,12 +71,11 @@ Match match(const Samples& from, const Samples& to, bool from_is_truth, const Co
     m.within_radius += d <= o.radius_factor * r;
     if (hit) (*hit)[i] = d <= o.radius_factor * r;
     m.within_radius_1 += d <= r;
-    m.within_distance += d <= o.distance;
-    for (std::size_t k = 0; k < o.distances.size(); ++k) m.within[k] += d <= o.distances[k];
+    for (std::size_t k = 0; k < distances.size(); ++k) m.within[k] += d <= distances[k];
     m.mean_distance += d;
   }
   const double n = double(from.pos.size());
-  m.within_radius /= n, m.within_radius_1 /= n, m.within_distance /= n, m.mean_distance /= n;
+  m.within_radius /= n, m.within_radius_1 /= n, m.mean_distance /= n;
   for (double& w : m.within) w /= n;
   return m;
 }
@@ -195,7 +196,11 @@ SkeletonComparison compare_skeletons(const std::vector<Skeleton>& truth,
   SkeletonComparison c;
   const Samples t = sample(truth, o.spacing), r = sample(reconstructed, o.spacing);
   std::vector<std::uint8_t> hit;
-  const Match precision = match(r, t, false, o), recall = match(t, r, true, o, &hit);
+  // The fixed distance is scored as the last of the further ones: one count per distance.
+  std::vector<double> distances = o.distances;
+  distances.push_back(o.distance);
+  Match precision = match(r, t, false, o, distances),
+        recall = match(t, r, true, o, distances, &hit);
   const std::vector<std::uint8_t> seen = seen_samples(t, o);
   std::size_t seen_count = 0, seen_hit = 0;
   for (std::size_t i = 0; i < seen.size(); ++i)
@@ -203,13 +208,14 @@ SkeletonComparison compare_skeletons(const std::vector<Skeleton>& truth,
   if (!t.pos.empty()) c.seen_fraction = double(seen_count) / double(t.pos.size());
   if (seen_count > 0) c.recall_seen = double(seen_hit) / double(seen_count);
   c.precision = precision.within_radius;
-  c.precision_distance = precision.within_distance;
   c.recall = recall.within_radius;
   c.precision_1r = precision.within_radius_1;
   c.recall_1r = recall.within_radius_1;
-  c.recall_distance = recall.within_distance;
-  c.precision_within = precision.within;
-  c.recall_within = recall.within;
+  c.precision_distance = precision.within.back();
+  c.recall_distance = recall.within.back();
+  precision.within.pop_back(), recall.within.pop_back();
+  c.precision_within = std::move(precision.within);
+  c.recall_within = std::move(recall.within);
   c.chamfer = 0.5 * (precision.mean_distance + recall.mean_distance);
   c.length_truth = t.length;
   c.length_reconstructed = r.length;

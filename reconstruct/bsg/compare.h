@@ -12,7 +12,8 @@ namespace ramus {
 struct CompareOptions {
   double radius_factor = 2.0;  // a sample matches when within radius_factor x the truth radius
   double distance = 0.1;       // ... or, for the fixed-distance scores, within this distance
-  // Further fixed distances, scored in the same matching pass (SkeletonComparison::within).
+  // Further fixed distances, scored in the same matching pass as `distance`
+  // (SkeletonComparison::precision_within, recall_within).
   std::vector<double> distances;
   double spacing = 0.02;       // sampling step along segments
   double min_radius = 0.0;     // floor under truth radii (thin twigs), in the cloud's units
