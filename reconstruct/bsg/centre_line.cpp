@@ -518,13 +518,26 @@ std::size_t drop_branches_inside_stems(Bsg& b, const std::vector<std::uint8_t>& 
                                        double spacing) {
   const std::size_t n = b.size();
   if (n < 3 || fitted.size() != n) return 0;
-  // Containers: the edges whose both ends were fitted, as cylinders of the larger radius.
+  // Containers: the edges whose both ends were fitted.
+  std::vector<std::uint8_t> container(n, 0);
+  for (std::uint32_t v = 0; v < n; ++v) {
+    const std::uint32_t u = b.parent[v];
+    container[v] = u != kNone && fitted[v] && fitted[u];
+  }
+  return drop_chains_inside_edges(b, container, std::vector<std::uint8_t>(n, 1), spacing);
+}
+
+std::size_t drop_chains_inside_edges(Bsg& b, const std::vector<std::uint8_t>& container,
+                                     const std::vector<std::uint8_t>& tip_may_go, double spacing) {
+  const std::size_t n = b.size();
+  if (n < 3 || container.size() != n || tip_may_go.size() != n) return 0;
+  // The container edges as cylinders of the larger radius of their ends.
   std::vector<std::uint32_t> seg;  // child vertex of each container edge
   std::vector<Eigen::Vector3d> mid;
   double reach = 0;
   for (std::uint32_t v = 0; v < n; ++v) {
     const std::uint32_t u = b.parent[v];
-    if (u == kNone || !fitted[v] || !fitted[u]) continue;
+    if (u == kNone || !container[v]) continue;
     seg.push_back(v);
     mid.push_back(0.5 * (b.pos[u] + b.pos[v]));
     const double r = std::max(b.radius[u], b.radius[v]);
@@ -563,7 +576,7 @@ std::size_t drop_branches_inside_stems(Bsg& b, const std::vector<std::uint8_t>& 
     // Leaf chains, from the tip down to the fork, tips in descending index order (removals take
     // effect at once, so of two chains centred on one axis only one goes).
     for (std::uint32_t tip = std::uint32_t(n); tip-- > 1;) {
-      if (!alive[tip] || children[tip] != 0) continue;
+      if (!alive[tip] || children[tip] != 0 || !tip_may_go[tip]) continue;
       chain.clear();
       for (std::uint32_t v = tip; v != kNone && b.parent[v] != kNone; v = b.parent[v]) {
         chain.push_back(v);

@@ -111,6 +111,12 @@ void subdivide_long_edges(Bsg& bsg, double spacing, double min_radius, double ed
 std::size_t drop_branches_inside_stems(Bsg& bsg, const std::vector<std::uint8_t>& fitted,
                                        double spacing);
 
+// The rule above with the containers given: container[v] says whether the edge from v's parent
+// to v is one, and only leaf chains whose tip has tip_may_go set are looked at. Returns the
+// number of vertices removed.
+std::size_t drop_chains_inside_edges(Bsg& bsg, const std::vector<std::uint8_t>& container,
+                                     const std::vector<std::uint8_t>& tip_may_go, double spacing);
+
 // Nodes in parent-first order (roots first, then children level by level), and each node's
 // child with the largest subtree (the first of equal ones; kNone for a tip). Shared by the
 // centre lines and the trunk tracking (stem_tracking.h).

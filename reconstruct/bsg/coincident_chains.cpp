@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "reconstruct/bsg/centre_line.h"
 #include "reconstruct/bsg/kdtree.h"
 
 namespace ramus::bsg {
@@ -21,7 +22,16 @@ std::size_t join_coincident_chains(Bsg& b, const CoincidentChainParams& params) 
   auto tolerance = [&](std::uint32_t v) {
     return std::max(params.spacings * params.spacing, params.radius_share * b.radius[v]);
   };
+  // Whether y is x or below it (x an ancestor of y) in the tree as it is being changed.
+  auto descends = [&](std::uint32_t x, std::uint32_t y) {
+    for (; y != kNone; y = up[y]) {
+      if (y == x) return true;
+    }
+    return false;
+  };
   std::vector<std::uint32_t> near;
+  // The parents that joined nodes left: tips now, if nothing else hangs there.
+  std::vector<std::uint32_t> left;
   std::size_t joined = 0;
   for (std::uint32_t v = 0; v < n; ++v) {
     const std::uint32_t from = up[v];
@@ -29,8 +39,9 @@ std::size_t join_coincident_chains(Bsg& b, const CoincidentChainParams& params) 
     const Eigen::Vector3d step = b.pos[v] - b.pos[from];
     if (!(step.squaredNorm() > 0)) continue;
     const double ahead = step.norm();
-    // Edges are found by their far ends: within the tolerance plus an edge's length of v (a
-    // search bound; the walk below bounds how far ahead the edge may lie).
+    // Edges are found by their far ends, within the tolerance plus an edge's length of v; a
+    // search bound of v's own step plus four tolerances for that length is enough, since the
+    // chains on one stem were split into steps of about one length (subdivide_long_edges).
     const double reach = tolerance(v) + std::min(longest, ahead + 4 * tolerance(v));
     near.clear();
     index.within(b.pos[v], reach, near);
@@ -51,17 +62,10 @@ std::size_t join_coincident_chains(Bsg& b, const CoincidentChainParams& params) 
       const double d = (b.pos[a] + t * ab - b.pos[v]).norm();
       const double limit = std::max({tolerance(v), tolerance(u), tolerance(a)});
       if (d > limit || (best != kNone && d >= best_d)) continue;
-      if (std::abs(ab.dot(step)) < params.cos_parallel * std::sqrt(l2) * ahead) continue;
-      // Ahead of `from` on the tree, by a path no longer than v's own step plus twice the
-      // tolerance: a chain that comes back round a loop to v's side is not the one v runs
-      // beside. The walk up from a is bounded by that length.
-      double walked = 0;
-      std::uint32_t x = a;
-      while (x != from && up[x] != kNone && walked <= ahead + 2 * limit) {
-        walked += (b.pos[x] - b.pos[up[x]]).norm();
-        x = up[x];
-      }
-      if (x != from || walked > ahead + 2 * limit) continue;
+      if (ab.dot(step) < params.cos_parallel * std::sqrt(l2) * ahead) continue;
+      // Not on v's own line of descent: v may not go between two of its ancestors, nor hang
+      // from one of its descendants (either would cut the tree into a loop).
+      if (descends(u, v) || descends(v, a)) continue;
       best = u, best_d = d, best_t = t;
     }
     if (best == kNone) continue;
@@ -70,12 +74,20 @@ std::size_t join_coincident_chains(Bsg& b, const CoincidentChainParams& params) 
     b.pos[v] = b.pos[a] + best_t * (b.pos[best] - b.pos[a]);
     up[v] = a;
     up[best] = v;
+    left.push_back(from);
     ++joined;
   }
   if (joined == 0) return 0;
   b.parent = up;
-  std::vector<std::vector<std::uint32_t>> children = children_of(b.parent);
-  b = depth_first(b, children);
+  std::vector<std::uint32_t> old_of;
+  b = depth_first(b, children_of(b.parent), &old_of);
+  // What a copy ran along before it came within the tolerance (a path that went down behind its
+  // fork and came back up the axis, or ran beside the stem farther than the tolerance) is a leaf
+  // chain now; it goes when it lies inside the wood of the stem it joined.
+  std::vector<std::uint8_t> was_left(n, 0), tip_may_go(n, 0);
+  for (std::uint32_t x : left) was_left[x] = 1;
+  for (std::uint32_t v = 0; v < n; ++v) tip_may_go[v] = was_left[old_of[v]];
+  drop_chains_inside_edges(b, std::vector<std::uint8_t>(n, 1), tip_may_go, params.spacing);
   return joined;
 }
 
