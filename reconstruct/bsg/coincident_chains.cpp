@@ -72,6 +72,10 @@ std::size_t join_coincident_chains(Bsg& b, const CoincidentChainParams& params) 
     // v goes onto the edge a-best, between its ends; its own children stay with it.
     const std::uint32_t a = up[best];
     b.pos[v] = b.pos[a] + best_t * (b.pos[best] - b.pos[a]);
+    // On the stem it takes the stem's radius there: a copy carries the radius of the branch it
+    // goes to, or of its own fit, and a node of another radius in the stem's chain is a
+    // collar or a neck in its mesh (the 14 m tree of seed 1: 0.30 m among nodes of 0.52 m).
+    b.radius[v] = b.radius[a] + best_t * (b.radius[best] - b.radius[a]);
     up[v] = a;
     up[best] = v;
     left.push_back(from);

@@ -30,12 +30,13 @@ struct CoincidentChainParams {
 // In parent-first order, every node is joined to the edge of another chain that runs within the
 // tolerance above, the same way (not against it), off the node's own line of descent (not
 // between two of its ancestors, not below it): the node moves onto that edge and splits it,
-// keeping its children. So a copy of a stem is zipped into the first node by node, and where it
-// leaves the stem its branch leaves from the stem's one chain; a chain that runs within the
-// tolerance of no other is unchanged. What a copy ran along before it came within the tolerance
-// (down behind its fork and back up, or beside the stem farther out) is a leaf chain then, and
-// goes by drop_chains_inside_edges (centre_line.h) with every other edge as a container. Keeps
-// parents before children (depth first). Returns the number of nodes joined.
+// keeping its children and taking the edge's radius there. So a copy of a stem is zipped into
+// the first node by node, and where it leaves the stem its branch leaves from the stem's one
+// chain; a chain that runs within the tolerance of no other is unchanged. What a copy ran along
+// before it came within the tolerance (down behind its fork and back up, or beside the stem
+// farther out) is a leaf chain then, and goes by drop_chains_inside_edges (centre_line.h) with
+// every other edge as a container. Keeps parents before children (depth first). Returns the
+// number of nodes joined.
 std::size_t join_coincident_chains(Bsg& bsg, const CoincidentChainParams& params);
 
 }  // namespace ramus::bsg

@@ -139,7 +139,8 @@ TEST_CASE("coincident chains: a copy that starts behind its fork is joined, what
   up = add_bsg_node(b, {0, 0, 0.45}, fork, 0.3);
   up = add_bsg_node(b, {0, 0, 0.35}, up, 0.3);
   up = add_bsg_node(b, {0.01, 0, 0.5}, up, 0.3);
-  for (int k = 0; k < 10; ++k) up = add_bsg_node(b, {0.01, 0, 0.73 + 0.25 * k}, up, 0.3);
+  // The way up carries the radius of the limb it goes to, as a copy's nodes may.
+  for (int k = 0; k < 10; ++k) up = add_bsg_node(b, {0.01, 0, 0.73 + 0.25 * k}, up, 0.15);
   const Eigen::Vector3d out_minus_x = Eigen::Vector3d(-1, 0, 1).normalized();
   for (int k = 1; k <= 5; ++k) {
     up = add_bsg_node(b, Eigen::Vector3d(0.01, 0, 2.98) + 0.3 * k * out_minus_x, up, 0.1);
@@ -151,7 +152,11 @@ TEST_CASE("coincident chains: a copy that starts behind its fork is joined, what
   // The stem, its limb, the copy from 1.98 m to 2.98 m and its limb.
   CHECK(total_length(b) == Approx(2.0 + 1.5 + 1.0 + 1.5).margin(0.01));
   int below_fork = 0;
-  for (std::uint32_t v = 0; v < b.size(); ++v) below_fork += b.pos[v].z() < 0.59;
+  for (std::uint32_t v = 0; v < b.size(); ++v) {
+    below_fork += b.pos[v].z() < 0.59;
+    // The joined nodes take the stem's radius: no neck in the stem's mesh.
+    if (std::abs(b.pos[v].x()) < 1e-9 && b.pos[v].z() < 2.0) CHECK(b.radius[v] == Approx(0.3));
+  }
   CHECK(below_fork == 3);  // the root and the stem's nodes at 0.2 and 0.4 m
 }
 
