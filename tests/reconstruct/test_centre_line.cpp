@@ -358,6 +358,34 @@ TEST_CASE("centre line: a copy of the trunk hung from a limb's base goes, a twig
   CHECK(b.parent[8] == limb);  // the survivor's first node, renumbered after the removal
 }
 
+TEST_CASE("centre line: with the containers given, only the leaf chains whose tips may go go",
+          "[centre_line]") {
+  // A stem (radius 0.2) up z with no fits, and from its node at z = 0.5 two leaf chains up
+  // inside it, 5 cm from its axis. Every edge is a container here; only the second chain's tip
+  // is flagged, so only the second chain goes (its three nodes).
+  bsg::Bsg b;
+  std::uint32_t up = bsg::kNone;
+  for (int k = 0; k <= 5; ++k) up = test::add_bsg_node(b, {0, 0, 0.5 * k}, up, 0.2);
+  std::vector<std::uint32_t> tips;
+  for (double x : {0.05, -0.05}) {
+    std::uint32_t v = 1;
+    for (int k = 1; k <= 3; ++k) v = test::add_bsg_node(b, {x, 0, 0.5 + 0.3 * k}, v, 0.02);
+    tips.push_back(v);
+  }
+  std::vector<std::uint8_t> tip_may_go(b.size(), 0);
+  tip_may_go[tips[1]] = 1;
+  const std::vector<std::uint8_t> every_edge(b.size(), 1);
+  bsg::Bsg kept = b;
+  CHECK(bsg::drop_chains_inside_edges(kept, every_edge, tip_may_go, 0.01) == 3);
+  REQUIRE(kept.size() == b.size() - 3);
+  for (const auto& p : kept.pos) CHECK(p.x() >= 0);
+  // No containers: nothing goes.
+  bsg::Bsg none = b;
+  CHECK(bsg::drop_chains_inside_edges(none, std::vector<std::uint8_t>(b.size(), 0),
+                                      std::vector<std::uint8_t>(b.size(), 1), 0.01) == 0);
+  CHECK(none.size() == b.size());
+}
+
 // Two limbs (radius 0.15, tapering) leave a stem (radius 0.2) side by side, 0.4 m apart, and are
 // scanned from one side; the skeleton's chain runs up between them, as the shortest paths of a
 // BSG that merged the two do. No circle fits a slab across both; the group of points nearest each
