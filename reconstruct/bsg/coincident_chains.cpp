@@ -87,7 +87,8 @@ std::size_t join_coincident_chains(Bsg& b, const CoincidentChainParams& params) 
   b = depth_first(b, children_of(b.parent), &old_of);
   // What a copy ran along before it came within the tolerance (a path that went down behind its
   // fork and came back up the axis, or ran beside the stem farther than the tolerance) is a leaf
-  // chain now; it goes when it lies inside the wood of the stem it joined.
+  // chain now; it goes by the rule of drop_branches_inside_stems when it lies inside the wood
+  // of the other edges (of the stem it joined, in the cases above).
   std::vector<std::uint8_t> was_left(n, 0), tip_may_go(n, 0);
   for (std::uint32_t x : left) was_left[x] = 1;
   for (std::uint32_t v = 0; v < n; ++v) tip_may_go[v] = was_left[old_of[v]];
