@@ -30,8 +30,8 @@ std::size_t join_coincident_chains(Bsg& b, const CoincidentChainParams& params) 
     return false;
   };
   std::vector<std::uint32_t> near;
-  // The parents that joined nodes left: tips now, if nothing else hangs there.
-  std::vector<std::uint32_t> left;
+  // The parents that joined nodes left (tips now, if nothing else hangs there), by old index.
+  std::vector<std::uint8_t> left(n, 0);
   std::size_t joined = 0;
   for (std::uint32_t v = 0; v < n; ++v) {
     const std::uint32_t from = up[v];
@@ -78,7 +78,7 @@ std::size_t join_coincident_chains(Bsg& b, const CoincidentChainParams& params) 
     b.radius[v] = b.radius[a] + best_t * (b.radius[best] - b.radius[a]);
     up[v] = a;
     up[best] = v;
-    left.push_back(from);
+    left[from] = 1;
     ++joined;
   }
   if (joined == 0) return 0;
@@ -89,9 +89,8 @@ std::size_t join_coincident_chains(Bsg& b, const CoincidentChainParams& params) 
   // fork and came back up the axis, or ran beside the stem farther than the tolerance) is a leaf
   // chain now; it goes by the rule of drop_branches_inside_stems when it lies inside the wood
   // of the other edges (of the stem it joined, in the cases above).
-  std::vector<std::uint8_t> was_left(n, 0), tip_may_go(n, 0);
-  for (std::uint32_t x : left) was_left[x] = 1;
-  for (std::uint32_t v = 0; v < n; ++v) tip_may_go[v] = was_left[old_of[v]];
+  std::vector<std::uint8_t> tip_may_go(n);
+  for (std::uint32_t v = 0; v < n; ++v) tip_may_go[v] = left[old_of[v]];
   drop_chains_inside_edges(b, std::vector<std::uint8_t>(n, 1), tip_may_go, params.spacing);
   return joined;
 }
